@@ -1,0 +1,41 @@
+#include "parallel.h"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+#include <vector>
+
+namespace kappa {
+
+namespace {
+std::atomic<unsigned> g_threads{0};
+}
+
+void set_thread_count(unsigned n) { g_threads = n; }
+
+unsigned thread_count() {
+    unsigned n = g_threads;
+    if (n == 0) n = std::max(1u, std::thread::hardware_concurrency());
+    return n;
+}
+
+void parallel_for_ranges(size_t n, const std::function<void(size_t, size_t)>& body,
+                         size_t min_chunk) {
+    if (n == 0) return;
+    size_t threads = std::min<size_t>(thread_count(), (n + min_chunk - 1) / std::max<size_t>(min_chunk, 1));
+    if (threads <= 1) {
+        body(0, n);
+        return;
+    }
+    std::vector<std::thread> workers;
+    workers.reserve(threads - 1);
+    size_t chunk = (n + threads - 1) / threads;
+    for (size_t t = 1; t < threads; ++t) {
+        size_t b = t * chunk, e = std::min(n, b + chunk);
+        if (b < e) workers.emplace_back([&body, b, e] { body(b, e); });
+    }
+    body(0, std::min(n, chunk));
+    for (auto& w : workers) w.join();
+}
+
+}  // namespace kappa

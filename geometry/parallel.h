@@ -1,0 +1,28 @@
+// Deterministic data-parallel loops. Work is split into contiguous ranges;
+// each index is computed by exactly one thread and writes only its own
+// outputs, so results never depend on the thread count.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace kappa {
+
+// Number of worker threads used by parallel_for (default: hardware
+// concurrency, at least 1). Setting 0 restores the default.
+void set_thread_count(unsigned n);
+unsigned thread_count();
+
+// Calls body(begin, end) on disjoint ranges covering [0, n). Small n runs
+// inline on the calling thread.
+void parallel_for_ranges(size_t n, const std::function<void(size_t, size_t)>& body,
+                         size_t min_chunk = 4096);
+
+// Calls body(i) for every i in [0, n).
+template <typename Body>
+void parallel_for(size_t n, Body&& body, size_t min_chunk = 4096) {
+    parallel_for_ranges(
+        n, [&](size_t b, size_t e) { for (size_t i = b; i < e; ++i) body(i); }, min_chunk);
+}
+
+}  // namespace kappa

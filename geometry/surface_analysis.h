@@ -1,0 +1,33 @@
+// One call that computes every per-vertex field of SurfaceFields for a mesh:
+// normals (Max 1999), mixed Voronoi areas (Meyer et al. 2002), curvature and
+// its derivative (Rusinkiewicz 2004), with optional Gaussian smoothing.
+#pragma once
+
+#include "mesh.h"
+#include "surface_fields.h"
+
+#include <functional>
+
+namespace kappa {
+
+// Gaussian smoothing widths (sigma) in model units; 0 disables a stage.
+struct SmoothingOptions {
+    float normals = 0;    // smooth normals before curvature is estimated
+    float curvature = 0;  // smooth the curvature tensor
+    float dcurv = 0;      // smooth the derivative-of-curvature tensor
+};
+
+// Wall-clock seconds spent in each stage.
+struct StageTimes {
+    double adjacency = 0, normals = 0, areas = 0, curvature = 0, dcurv = 0, smoothing = 0;
+    double total() const { return adjacency + normals + areas + curvature + dcurv + smoothing; }
+};
+
+// progress(fraction in [0,1], stage name); may be empty. Called from the
+// calling thread only.
+using ProgressFn = std::function<void(float, const char*)>;
+
+SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing = {},
+                                     StageTimes* times = nullptr, const ProgressFn& progress = {});
+
+}  // namespace kappa

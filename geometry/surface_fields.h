@@ -1,0 +1,26 @@
+// Everything kappa estimates per vertex, following Rusinkiewicz 2004:
+// normal, principal curvatures and directions, and the derivative of
+// curvature C in the principal frame (conventions.md: a=C111, b=C112,
+// c=C122, d=C222). All arrays have one entry per input vertex.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace kappa {
+
+struct SurfaceFields {
+    std::vector<glm::vec3> normals;      // unit, outward
+    std::vector<float> point_areas;      // mixed Voronoi area (Meyer et al. 2002)
+    std::vector<float> k1, k2;           // principal curvatures, k1 >= k2
+    std::vector<glm::vec3> d1, d2;       // unit principal directions, d1 x d2 = n
+    std::vector<glm::vec4> dcurv;        // (a, b, c, d) in the (d1, d2) frame
+    std::vector<uint8_t> flags;          // VertexFlag bits
+
+    size_t size() const { return normals.size(); }
+};
+
+}  // namespace kappa

@@ -1,0 +1,19 @@
+// Per-vertex reliability flags. A flagged vertex still gets finite values
+// (never NaN or inf); the flag says why they should not be trusted.
+#pragma once
+
+#include <cstdint>
+
+namespace kappa {
+
+enum VertexFlag : uint8_t {
+    kFlagIsolated    = 1 << 0,  // no faces use this vertex
+    kFlagDegenerate  = 1 << 1,  // every incident face has zero area
+    kFlagBoundary    = 1 << 2,  // on an open boundary (one-sided neighbourhood)
+    kFlagNonManifold = 1 << 3,  // on an edge shared by more than two faces
+};
+
+// Bits that make a curvature estimate unreliable (everything above).
+constexpr uint8_t kFlagUnreliable = kFlagIsolated | kFlagDegenerate | kFlagBoundary | kFlagNonManifold;
+
+}  // namespace kappa

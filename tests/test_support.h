@@ -1,0 +1,26 @@
+// Small helpers shared by the test executables.
+#pragma once
+
+#include <string>
+
+namespace kappa::test {
+
+// Path of a mesh in ../shared/meshes (set at configure time).
+std::string shared_mesh(const std::string& name);
+
+// A fresh empty directory under the system temp dir, unique per call.
+std::string temp_dir();
+
+struct CommandResult {
+    int exit_code = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// Runs a shell command, capturing its output.
+CommandResult run_command(const std::string& command);
+
+// Writes text (or bytes) to a file, creating or truncating it.
+void write_file(const std::string& path, const std::string& contents);
+std::string read_file(const std::string& path);
+
+}  // namespace kappa::test
