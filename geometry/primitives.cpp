@@ -126,11 +126,16 @@ Mesh make_jittered_sphere(float radius, int levels, float jitter, uint32_t seed)
     Mesh m = make_icosphere(1.0f, levels);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    // Typical edge length of the subdivided icosahedron on the unit sphere.
-    const float edge = 1.1f / float(1 << levels);
+    // Shortest edge of the subdivided icosahedron on the unit sphere is about 0.9 / 2^levels;
+    // moving each vertex by at most jitter times half of it keeps every triangle unfolded
+    // for jitter < 1.
+    const float step = 0.45f / float(1 << levels);
     for (auto& p : m.positions) {
-        glm::vec3 d(u(rng), u(rng), u(rng));
-        p = glm::normalize(p + jitter * edge * d) * radius;
+        glm::vec3 d;
+        do d = glm::vec3(u(rng), u(rng), u(rng));
+        while (glm::dot(d, d) > 1.0f);
+        d -= glm::dot(d, p) * p;  // tangential
+        p = glm::normalize(p + jitter * step * d) * radius;
     }
     return m;
 }

@@ -27,8 +27,9 @@ Mesh make_ellipsoid(float a, float b, float c, int levels);
 Mesh make_grid(float size, int n);
 
 // Randomly jittered sphere: an icosphere whose vertices are moved randomly
-// along the surface (then put back on the sphere), giving irregular and
-// skinny triangles. Deterministic for a given seed.
+// along the surface by up to `jitter` (0..1) times half the shortest edge,
+// giving irregular and skinny triangles that never fold. Deterministic for a
+// given seed.
 Mesh make_jittered_sphere(float radius, int levels, float jitter, uint32_t seed);
 
 }  // namespace kappa

@@ -17,3 +17,19 @@ enum VertexFlag : uint8_t {
 constexpr uint8_t kFlagUnreliable = kFlagIsolated | kFlagDegenerate | kFlagBoundary | kFlagNonManifold;
 
 }  // namespace kappa
+
+#include "mesh.h"
+#include "vertex_faces.h"
+
+#include <vector>
+
+namespace kappa {
+
+// Flags every vertex from its one-ring alone (so it is parallel and needs no
+// global edge table): isolated (no face), degenerate (zero Voronoi area),
+// boundary (an edge at the vertex used by one face), non-manifold (an edge
+// used by three or more faces).
+std::vector<uint8_t> compute_vertex_flags(const Mesh& mesh, const VertexFaces& vf,
+                                          const std::vector<float>& point_areas);
+
+}  // namespace kappa

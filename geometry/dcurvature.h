@@ -1,0 +1,23 @@
+// Derivative of curvature (Rusinkiewicz 2004, sec. 3.4): the same scheme as
+// curvature.h one order up. Per face, the vertices' curvature tensors are
+// rotated into the face frame, and C = (a, b, c, d) is fitted by least
+// squares to their differences along the edges:
+//   d(ku) = a u + b v,  d(kuv) = b u + c v,  d(kv) = c u + d v.
+// The face tensors are then rotated into each vertex's principal frame
+// (d1, d2) and averaged with corner-area weights.
+#pragma once
+
+#include "curvature.h"
+
+#include <glm/vec4.hpp>
+#include <vector>
+
+namespace kappa {
+
+// Returns (a, b, c, d) = (C111, C112, C122, C222) in each vertex's (d1, d2).
+std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, const FaceFrames& frames,
+                                     const std::vector<glm::vec3>& corner_areas, const std::vector<float>& k1,
+                                     const std::vector<float>& k2, const std::vector<glm::vec3>& d1,
+                                     const std::vector<glm::vec3>& d2);
+
+}  // namespace kappa

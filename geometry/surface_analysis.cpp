@@ -1,0 +1,102 @@
+#include "surface_analysis.h"
+
+#include "curvature.h"
+#include "dcurvature.h"
+#include "normals.h"
+#include "smoothing.h"
+#include "vertex_faces.h"
+#include "vertex_flags.h"
+#include "voronoi_areas.h"
+
+#include <chrono>
+
+namespace kappa {
+
+namespace {
+
+class StageTimer {
+public:
+    explicit StageTimer(double* slot) : slot_(slot), start_(std::chrono::steady_clock::now()) {}
+    ~StageTimer() {
+        if (slot_) *slot_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    double* slot_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing, StageTimes* times,
+                                     const ProgressFn& progress) {
+    StageTimes local;
+    StageTimes& t = times ? *times : local;
+    auto report = [&](float f, const char* stage) {
+        if (progress) progress(f, stage);
+    };
+    SurfaceFields out;
+
+    report(0.0f, "adjacency");
+    VertexFaces vf;
+    {
+        StageTimer timer(&t.adjacency);
+        vf = build_vertex_faces(mesh);
+    }
+
+    report(0.1f, "areas");
+    std::vector<glm::vec3> corner_areas;
+    {
+        StageTimer timer(&t.areas);
+        corner_areas = compute_corner_areas(mesh);
+        out.point_areas = compute_point_areas(vf, corner_areas);
+        out.flags = compute_vertex_flags(mesh, vf, out.point_areas);
+    }
+
+    report(0.2f, "normals");
+    {
+        StageTimer timer(&t.normals);
+        out.normals = compute_vertex_normals(mesh, vf);
+    }
+    if (smoothing.normals > 0) {
+        report(0.25f, "smoothing normals");
+        StageTimer timer(&t.smoothing);
+        smooth_normals({mesh, vf, out.point_areas, out.normals}, smoothing.normals, out.normals);
+    }
+    // Vertices with no usable face keep a fixed unit normal (they are flagged).
+    for (auto& n : out.normals)
+        if (n == glm::vec3(0.0f)) n = glm::vec3(0, 0, 1);
+
+    report(0.35f, "curvature");
+    FaceFrames frames;
+    VertexTensors tensors;
+    {
+        StageTimer timer(&t.curvature);
+        frames = compute_face_frames(mesh);
+        tensors = compute_curvature_tensors(mesh, vf, frames, out.normals, corner_areas);
+    }
+    if (smoothing.curvature > 0) {
+        report(0.5f, "smoothing curvature");
+        StageTimer timer(&t.smoothing);
+        smooth_curvature_tensors({mesh, vf, out.point_areas, out.normals}, smoothing.curvature, tensors);
+    }
+    {
+        StageTimer timer(&t.curvature);
+        principal_curvatures(tensors, out.k1, out.k2, out.d1, out.d2);
+    }
+
+    report(0.65f, "derivative of curvature");
+    {
+        StageTimer timer(&t.dcurv);
+        out.dcurv = compute_dcurv(mesh, vf, frames, corner_areas, out.k1, out.k2, out.d1, out.d2);
+    }
+    if (smoothing.dcurv > 0) {
+        report(0.8f, "smoothing derivative");
+        StageTimer timer(&t.smoothing);
+        smooth_dcurv({mesh, vf, out.point_areas, out.normals}, smoothing.dcurv, out.d1, out.d2, out.dcurv);
+    }
+    report(1.0f, "done");
+    return out;
+}
+
+}  // namespace kappa

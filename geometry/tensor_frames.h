@@ -1,0 +1,109 @@
+// Moving curvature tensors and their derivatives between tangent frames
+// (Rusinkiewicz 2004, sec. 3.3): a frame (u, v) is first rotated rigidly
+// about the common axis so that it lies in the plane of the other frame,
+// then the tensor is re-expressed there. This rotation is what avoids the
+// cos^2 loss of a plain projection.
+#pragma once
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cmath>
+#include <utility>
+
+namespace kappa {
+
+// Symmetric 2x2 tensor [[ku, kuv], [kuv, kv]] in some frame (u, v).
+struct Tensor2 {
+    float ku = 0, kuv = 0, kv = 0;
+};
+
+// A right-handed unit tangent frame for normal n: u x v = n (Duff et al.
+// 2017, "Building an orthonormal basis, revisited"). Depends on n only.
+inline void tangent_frame(const glm::vec3& n, glm::vec3& u, glm::vec3& v) {
+    const float sign = std::copysign(1.0f, n.z);
+    const float a = -1.0f / (sign + n.z);
+    const float b = n.x * n.y * a;
+    u = glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    v = glm::vec3(b, sign + n.y * n.y * a, -n.y);
+}
+
+// Rotates the frame (u, v) about the axis u x v (its normal) x new_normal so
+// that its normal becomes new_normal (trimesh2's rot_coord_sys).
+inline void rotate_frame(const glm::vec3& u, const glm::vec3& v, const glm::vec3& new_normal,
+                         glm::vec3& ru, glm::vec3& rv) {
+    ru = u;
+    rv = v;
+    const glm::vec3 old_normal = glm::cross(u, v);
+    const float ndot = glm::dot(old_normal, new_normal);
+    if (ndot <= -1.0f) {  // opposite normals: a half turn
+        ru = -ru;
+        rv = -rv;
+        return;
+    }
+    const glm::vec3 perp_old = new_normal - ndot * old_normal;
+    const glm::vec3 dperp = (old_normal + new_normal) / (1.0f + ndot);
+    ru -= dperp * glm::dot(ru, perp_old);
+    rv -= dperp * glm::dot(rv, perp_old);
+}
+
+// Re-expresses tensor t, given in frame (old_u, old_v), in frame (new_u,
+// new_v) after rotating the new frame into the old frame's plane.
+inline Tensor2 project_tensor(const glm::vec3& old_u, const glm::vec3& old_v, const Tensor2& t,
+                              const glm::vec3& new_u, const glm::vec3& new_v) {
+    glm::vec3 ru, rv;
+    rotate_frame(new_u, new_v, glm::cross(old_u, old_v), ru, rv);
+    const float u1 = glm::dot(ru, old_u), v1 = glm::dot(ru, old_v);
+    const float u2 = glm::dot(rv, old_u), v2 = glm::dot(rv, old_v);
+    Tensor2 r;
+    r.ku = t.ku * u1 * u1 + t.kuv * (2.0f * u1 * v1) + t.kv * v1 * v1;
+    r.kuv = t.ku * u1 * u2 + t.kuv * (u1 * v2 + u2 * v1) + t.kv * v1 * v2;
+    r.kv = t.ku * u2 * u2 + t.kuv * (2.0f * u2 * v2) + t.kv * v2 * v2;
+    return r;
+}
+
+// The symmetric trilinear form C(x, y, z) for 2-vectors, with C stored as
+// (a, b, c, d) = (C111, C112, C122, C222) (conventions.md).
+inline float trilinear(const glm::vec4& C, float x1, float x2, float y1, float y2, float z1, float z2) {
+    return C[0] * x1 * y1 * z1 +
+           C[1] * (x1 * y1 * z2 + x1 * y2 * z1 + x2 * y1 * z1) +
+           C[2] * (x1 * y2 * z2 + x2 * y1 * z2 + x2 * y2 * z1) +
+           C[3] * x2 * y2 * z2;
+}
+
+// Re-expresses the derivative-of-curvature tensor C, given in (old_u,
+// old_v), in (new_u, new_v), rotating as project_tensor does.
+inline glm::vec4 project_dcurv(const glm::vec3& old_u, const glm::vec3& old_v, const glm::vec4& C,
+                               const glm::vec3& new_u, const glm::vec3& new_v) {
+    glm::vec3 ru, rv;
+    rotate_frame(new_u, new_v, glm::cross(old_u, old_v), ru, rv);
+    const float u1 = glm::dot(ru, old_u), v1 = glm::dot(ru, old_v);
+    const float u2 = glm::dot(rv, old_u), v2 = glm::dot(rv, old_v);
+    return {trilinear(C, u1, v1, u1, v1, u1, v1), trilinear(C, u1, v1, u1, v1, u2, v2),
+            trilinear(C, u1, v1, u2, v2, u2, v2), trilinear(C, u2, v2, u2, v2, u2, v2)};
+}
+
+// Eigen-decomposition of tensor t in frame (u, v) with normal n = u x v by
+// one Jacobi rotation: k1 >= k2 (signed), d1 x d2 = n.
+inline void diagonalize_tensor(const glm::vec3& u, const glm::vec3& v, const glm::vec3& n, const Tensor2& t,
+                               glm::vec3& d1, glm::vec3& d2, float& k1, float& k2) {
+    float c = 1, s = 0, tt = 0;
+    if (t.kuv != 0.0f) {
+        const float h = 0.5f * (t.kv - t.ku) / t.kuv;
+        tt = (h < 0.0f) ? 1.0f / (h - std::sqrt(1.0f + h * h)) : 1.0f / (h + std::sqrt(1.0f + h * h));
+        c = 1.0f / std::sqrt(1.0f + tt * tt);
+        s = tt * c;
+    }
+    k1 = t.ku - tt * t.kuv;  // eigenvalue along c u - s v
+    k2 = t.kv + tt * t.kuv;  // eigenvalue along s u + c v
+    if (k1 >= k2) {
+        d1 = c * u - s * v;
+    } else {
+        std::swap(k1, k2);
+        d1 = s * u + c * v;
+    }
+    d2 = glm::cross(n, d1);
+}
+
+}  // namespace kappa
