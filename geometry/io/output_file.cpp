@@ -1,0 +1,47 @@
+#include "output_file.h"
+
+#include "io_errors.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace kappa::io {
+
+OutputFile::OutputFile(const std::string& path) : path_(path) {
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd_ < 0) fail("cannot open for writing", errno);
+}
+
+OutputFile::~OutputFile() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+void OutputFile::write(const char* data, size_t size) {
+    while (size > 0) {
+        ssize_t n = ::write(fd_, data, size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            fail("write failed", errno);
+        }
+        if (n == 0) fail("write failed", EIO);
+        data += n;
+        size -= size_t(n);
+    }
+}
+
+void OutputFile::close() {
+    int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail("write failed at close", errno);
+}
+
+void OutputFile::fail(const std::string& what, int error) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+    fail_write(path_, what + ": " + std::strerror(error));
+}
+
+}  // namespace kappa::io

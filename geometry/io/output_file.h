@@ -1,0 +1,30 @@
+// A file opened for writing whose every failure (cannot create, disk full,
+// I/O error at close) throws MeshWriteError "PATH: problem".
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace kappa::io {
+
+class OutputFile {
+public:
+    explicit OutputFile(const std::string& path);  // creates or truncates
+    ~OutputFile();                                 // closes silently if close() was not called
+    OutputFile(const OutputFile&) = delete;
+    OutputFile& operator=(const OutputFile&) = delete;
+
+    void write(const char* data, size_t size);
+    void write(std::string_view text) { write(text.data(), text.size()); }
+    // Flushes and closes; throws if the data could not be stored.
+    void close();
+
+private:
+    [[noreturn]] void fail(const std::string& what, int error);
+
+    std::string path_;
+    int fd_ = -1;
+};
+
+}  // namespace kappa::io
