@@ -11,22 +11,12 @@ namespace {
 
 // Normal equations of the fit above, with the kuv equation counted twice
 // (kuv appears twice in the tensor): a 4x4 SPD system in (a, b, c, d).
-bool fit_face_dcurv(const Mesh& mesh, size_t i, const FaceFrames& frames, const std::vector<float>& k1,
-                    const std::vector<float>& k2, const std::vector<glm::vec3>& d1,
-                    const std::vector<glm::vec3>& d2, glm::vec4& out) {
-    const Face& f = mesh.faces[i];
-    const glm::vec3 t = frames.t[i], b = frames.b[i];
-    Tensor2 fcurv[3];
-    for (int j = 0; j < 3; ++j) {
-        const uint32_t v = f[j];
-        fcurv[j] = project_tensor(d1[v], d2[v], Tensor2{k1[v], 0.0f, k2[v]}, t, b);
-    }
-    double w[4][4] = {}, m[4] = {};
-    double uu = 0, uv = 0, vv = 0;
+bool fit_face_dcurv(const glm::dvec3 (&e)[3], const Tensor2 (&fcurv)[3], const glm::dvec3& t, const glm::dvec3& b,
+                    glm::vec4& out) {
+    double m[4] = {}, uu = 0, uv = 0, vv = 0;
     for (int j = 0; j < 3; ++j) {
         const int prev = (j + 2) % 3, next = (j + 1) % 3;
-        const glm::dvec3 e = glm::dvec3(mesh.positions[f[prev]]) - glm::dvec3(mesh.positions[f[next]]);
-        const double u = glm::dot(e, glm::dvec3(t)), v = glm::dot(e, glm::dvec3(b));
+        const double u = glm::dot(e[j], t), v = glm::dot(e[j], b);
         const double dku = double(fcurv[prev].ku) - fcurv[next].ku;
         const double dkuv = double(fcurv[prev].kuv) - fcurv[next].kuv;
         const double dkv = double(fcurv[prev].kv) - fcurv[next].kv;
@@ -38,13 +28,7 @@ bool fit_face_dcurv(const Mesh& mesh, size_t i, const FaceFrames& frames, const 
         m[2] += 2.0 * v * dkuv + u * dkv;
         m[3] += v * dkv;
     }
-    w[0][0] = uu;
-    w[0][1] = w[1][0] = uv;
-    w[1][1] = 2.0 * uu + vv;
-    w[1][2] = w[2][1] = 2.0 * uv;
-    w[2][2] = uu + 2.0 * vv;
-    w[2][3] = w[3][2] = uv;
-    w[3][3] = vv;
+    const double w[4][4] = {{uu, uv, 0, 0}, {uv, 2 * uu + vv, 2 * uv, 0}, {0, 2 * uv, uu + 2 * vv, uv}, {0, 0, uv, vv}};
     double x[4];
     if (!ldlt_solve(w, m, x)) return false;
     out = glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3]));
@@ -53,15 +37,35 @@ bool fit_face_dcurv(const Mesh& mesh, size_t i, const FaceFrames& frames, const 
 
 }  // namespace
 
-std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, const FaceFrames& frames,
-                                     const std::vector<glm::vec3>& corner_areas, const std::vector<float>& k1,
-                                     const std::vector<float>& k2, const std::vector<glm::vec3>& d1,
-                                     const std::vector<glm::vec3>& d2) {
+std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, const FaceFits& fits,
+                                     const VertexTensors& tensors, const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-    std::vector<glm::vec4> face_dcurv(nf);
-    std::vector<uint8_t> face_ok(nf, 0);
+    // Per corner: the face's C in the corner vertex's (d1, d2) frame, times the corner weight.
+    std::vector<glm::vec4> corner_dcurv(3 * nf, glm::vec4(0.0f));
+    std::vector<float> corner_weight(3 * nf, 0.0f);
+
     parallel_for(nf, [&](size_t i) {
-        if (!frames.degenerate(i)) face_ok[i] = fit_face_dcurv(mesh, i, frames, k1, k2, d1, d2, face_dcurv[i]);
+        if (fits.corner_weights[3 * i] + fits.corner_weights[3 * i + 1] + fits.corner_weights[3 * i + 2] <= 0) return;
+        const Face& f = mesh.faces[i];
+        const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
+        const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};
+        // Vertex tensors in the face frame: the inverse (transposed) rotation of the curvature step.
+        Tensor2 fcurv[3];
+        for (int j = 0; j < 3; ++j)
+            fcurv[j] = transform_tensor(fits.corner_frames[3 * i + j].transposed(), tensors.tensor[f[j]]);
+        glm::vec4 face_dcurv;
+        if (!fit_face_dcurv(e, fcurv, fits.t[i], fits.b[i], face_dcurv)) return;
+        for (int j = 0; j < 3; ++j) {
+            const uint32_t v = f[j];
+            // (d1, d2) = (c u - s v, s u + c v) in the vertex frame, composed with the rotation into the face.
+            const float c = glm::dot(d1[v], tensors.u[v]), s = -glm::dot(d1[v], tensors.v[v]);
+            const FrameChange& r = fits.corner_frames[3 * i + j];
+            const FrameChange m{c * r.m00 - s * r.m10, c * r.m01 - s * r.m11, s * r.m00 + c * r.m10,
+                                s * r.m01 + c * r.m11};
+            const float w = fits.corner_weights[3 * i + j];
+            corner_dcurv[3 * i + j] = w * transform_dcurv(m, face_dcurv);
+            corner_weight[3 * i + j] = w;
+        }
     });
 
     std::vector<glm::vec4> dcurv(nv, glm::vec4(0.0f));
@@ -69,12 +73,9 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, co
         glm::dvec4 sum(0.0);
         double wsum = 0;
         for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
-            const uint32_t c = vf.corners[k], fi = c / 3;
-            if (!face_ok[fi]) continue;
-            const double wt = corner_areas[fi][c % 3];
-            if (!(wt > 0)) continue;
-            sum += wt * glm::dvec4(project_dcurv(frames.t[fi], frames.b[fi], face_dcurv[fi], d1[vi], d2[vi]));
-            wsum += wt;
+            const uint32_t c = vf.corners[k];
+            sum += glm::dvec4(corner_dcurv[c]);
+            wsum += corner_weight[c];
         }
         if (wsum > 0) dcurv[vi] = glm::vec4(sum / wsum);
     });

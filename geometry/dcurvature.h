@@ -14,10 +14,10 @@
 
 namespace kappa {
 
-// Returns (a, b, c, d) = (C111, C112, C122, C222) in each vertex's (d1, d2).
-std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, const FaceFrames& frames,
-                                     const std::vector<glm::vec3>& corner_areas, const std::vector<float>& k1,
-                                     const std::vector<float>& k2, const std::vector<glm::vec3>& d1,
-                                     const std::vector<glm::vec3>& d2);
+// `fits` and `tensors` from compute_curvature_tensors (tensors possibly
+// smoothed), d1 from principal_curvatures of those tensors. Returns
+// (a, b, c, d) = (C111, C112, C122, C222) in each vertex's (d1, d2).
+std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, const FaceFits& fits,
+                                     const VertexTensors& tensors, const std::vector<glm::vec3>& d1);
 
 }  // namespace kappa

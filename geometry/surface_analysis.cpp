@@ -68,12 +68,11 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
         if (n == glm::vec3(0.0f)) n = glm::vec3(0, 0, 1);
 
     report(0.35f, "curvature");
-    FaceFrames frames;
+    FaceFits fits;
     VertexTensors tensors;
     {
         StageTimer timer(&t.curvature);
-        frames = compute_face_frames(mesh);
-        tensors = compute_curvature_tensors(mesh, vf, frames, out.normals, corner_areas);
+        tensors = compute_curvature_tensors(mesh, vf, out.normals, corner_areas, fits);
     }
     if (smoothing.curvature > 0) {
         report(0.5f, "smoothing curvature");
@@ -88,7 +87,7 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
     report(0.65f, "derivative of curvature");
     {
         StageTimer timer(&t.dcurv);
-        out.dcurv = compute_dcurv(mesh, vf, frames, corner_areas, out.k1, out.k2, out.d1, out.d2);
+        out.dcurv = compute_dcurv(mesh, vf, fits, tensors, out.d1);
     }
     if (smoothing.dcurv > 0) {
         report(0.8f, "smoothing derivative");

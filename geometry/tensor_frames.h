@@ -84,6 +84,45 @@ inline glm::vec4 project_dcurv(const glm::vec3& old_u, const glm::vec3& old_v, c
             trilinear(C, u1, v1, u2, v2, u2, v2), trilinear(C, u2, v2, u2, v2, u2, v2)};
 }
 
+// A change of 2D frame given by the new basis vectors' coordinates in the
+// old basis: new_x = m00 old_x + m01 old_y, new_y = m10 old_x + m11 old_y.
+struct FrameChange {
+    float m00 = 1, m01 = 0, m10 = 0, m11 = 1;
+    FrameChange transposed() const { return {m00, m10, m01, m11}; }
+};
+
+// The rotated frame (u, v) of a vertex, seen in a face's frame (t, b) (the
+// coefficients project_tensor computes). Its transpose maps the other way:
+// the rotation is orthogonal.
+inline FrameChange frame_change(const glm::vec3& t, const glm::vec3& b, const glm::vec3& u, const glm::vec3& v) {
+    glm::vec3 ru, rv;
+    rotate_frame(u, v, glm::cross(t, b), ru, rv);
+    return {glm::dot(ru, t), glm::dot(ru, b), glm::dot(rv, t), glm::dot(rv, b)};
+}
+
+// T in the new frame: M T M^T.
+inline Tensor2 transform_tensor(const FrameChange& m, const Tensor2& t) {
+    const float x0 = t.ku * m.m00 + t.kuv * m.m01, y0 = t.kuv * m.m00 + t.kv * m.m01;  // T m0
+    const float x1 = t.ku * m.m10 + t.kuv * m.m11, y1 = t.kuv * m.m10 + t.kv * m.m11;  // T m1
+    return {m.m00 * x0 + m.m01 * y0, m.m10 * x0 + m.m11 * y0, m.m10 * x1 + m.m11 * y1};
+}
+
+// C in the new frame: (C(m0,m0,m0), C(m0,m0,m1), C(m0,m1,m1), C(m1,m1,m1)).
+// C(x) = [[a x1 + b x2, b x1 + c x2], [b x1 + c x2, c x1 + d x2]] is C with
+// one slot filled; then C(x, y, z) = y^T C(x) z.
+inline glm::vec4 transform_dcurv(const FrameChange& m, const glm::vec4& C) {
+    // C(m0) and C(m1) as [[x00, x01], [x01, x11]].
+    const float p00 = C[0] * m.m00 + C[1] * m.m01, p01 = C[1] * m.m00 + C[2] * m.m01,
+                p11 = C[2] * m.m00 + C[3] * m.m01;
+    const float r00 = C[0] * m.m10 + C[1] * m.m11, r01 = C[1] * m.m10 + C[2] * m.m11,
+                r11 = C[2] * m.m10 + C[3] * m.m11;
+    const float a0 = p00 * m.m00 + p01 * m.m01, a1 = p01 * m.m00 + p11 * m.m01;  // C(m0) m0
+    const float b0 = p00 * m.m10 + p01 * m.m11, b1 = p01 * m.m10 + p11 * m.m11;  // C(m0) m1
+    const float c0 = r00 * m.m10 + r01 * m.m11, c1 = r01 * m.m10 + r11 * m.m11;  // C(m1) m1
+    return {m.m00 * a0 + m.m01 * a1, m.m10 * a0 + m.m11 * a1, m.m10 * b0 + m.m11 * b1,
+            m.m10 * c0 + m.m11 * c1};
+}
+
 // Eigen-decomposition of tensor t in frame (u, v) with normal n = u x v by
 // one Jacobi rotation: k1 >= k2 (signed), d1 x d2 = n.
 inline void diagonalize_tensor(const glm::vec3& u, const glm::vec3& v, const glm::vec3& n, const Tensor2& t,
