@@ -1,0 +1,38 @@
+# kappa_render: the OpenGL 3.3 core line-drawing renderer (render/*.cpp).
+# Included from the top CMakeLists.txt when render/*.cpp exist.
+#   - glad 2 is generated at build time (python3-glad, offline with --reproducible)
+#   - shaders/*.glsl are embedded into the library as string literals, so the
+#     kappa executable runs from any directory
+#   - EGL for headless contexts, libpng for PNG output
+
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+find_package(PNG REQUIRED)
+find_program(KAPPA_GLAD_EXECUTABLE glad REQUIRED)
+
+# --- glad: GL 3.3 core loader ------------------------------------------------
+set(KAPPA_GLAD_DIR ${CMAKE_BINARY_DIR}/glad)
+add_custom_command(
+  OUTPUT ${KAPPA_GLAD_DIR}/src/gl.c ${KAPPA_GLAD_DIR}/include/glad/gl.h
+  COMMAND ${KAPPA_GLAD_EXECUTABLE} --reproducible --quiet --api gl:core=3.3 --out-path ${KAPPA_GLAD_DIR} c
+  COMMENT "Generating the glad OpenGL 3.3 core loader"
+  VERBATIM)
+add_library(kappa_glad STATIC ${KAPPA_GLAD_DIR}/src/gl.c)
+target_include_directories(kappa_glad PUBLIC ${KAPPA_GLAD_DIR}/include)
+set_target_properties(kappa_glad PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
+# --- shaders embedded as string literals --------------------------------------
+file(GLOB KAPPA_SHADER_FILES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/*.glsl)
+set(KAPPA_SHADER_CPP ${CMAKE_BINARY_DIR}/generated/embedded_shaders.cpp)
+add_custom_command(
+  OUTPUT ${KAPPA_SHADER_CPP}
+  COMMAND ${CMAKE_COMMAND} -DOUTPUT=${KAPPA_SHADER_CPP} -DSHADER_DIR=${CMAKE_SOURCE_DIR}/shaders
+          -P ${CMAKE_SOURCE_DIR}/cmake/render_embed_shaders.cmake
+  DEPENDS ${KAPPA_SHADER_FILES} ${CMAKE_SOURCE_DIR}/cmake/render_embed_shaders.cmake
+  COMMENT "Embedding shaders/*.glsl"
+  VERBATIM)
+
+# --- the library ----------------------------------------------------------------
+add_library(kappa_render STATIC ${KAPPA_RENDER_SOURCES} ${KAPPA_SHADER_CPP})
+target_include_directories(kappa_render PUBLIC ${CMAKE_SOURCE_DIR})
+target_link_libraries(kappa_render PUBLIC kappa_geometry kappa_glad OpenGL::OpenGL OpenGL::EGL
+                      PRIVATE PNG::PNG)

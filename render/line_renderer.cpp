@@ -1,0 +1,56 @@
+#include "render/line_renderer.h"
+
+namespace kappa::render {
+
+namespace {
+
+std::vector<ShaderStage> line_program(const char* geometry_file) {
+    return {{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "view_dependent.glsl", "lines_vert.glsl"}},
+            {GL_GEOMETRY_SHADER, {"line_quad.glsl", geometry_file}},
+            {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}};
+}
+
+}  // namespace
+
+LineRenderer::LineRenderer() : isolines_(line_program("isolines_geom.glsl")), boundaries_(line_program("boundary_geom.glsl")) {}
+
+void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
+                              const RenderSettings& s) {
+    p.use();
+    p.set("u_mvp", frame.mvp);
+    p.set("u_eye", frame.eye);
+    p.set("u_feature_size_sq", mesh.feature_size() * mesh.feature_size());
+    p.set("u_viewport", frame.viewport);
+    p.set("u_line_width", s.line_width);
+    p.set("u_depth", 0);
+    p.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
+}
+
+void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
+                        GLuint surface_depth_texture) {
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_MAX);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
+
+    if (s.lines.contours || s.lines.suggestive) {
+        set_common(isolines_, mesh, frame, s);
+        isolines_.set("u_contours", int(s.lines.contours));
+        isolines_.set("u_suggestive", int(s.lines.suggestive));
+        isolines_.set("u_sc_threshold", s.sc_threshold);
+        isolines_.set("u_fade", int(s.fade));
+        mesh.draw_triangles();
+    }
+    if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {
+        set_common(boundaries_, mesh, frame, s);
+        mesh.draw_boundary_edges();
+    }
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+}
+
+}  // namespace kappa::render

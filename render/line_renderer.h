@@ -1,0 +1,26 @@
+// Line passes: occluding contours, suggestive contours and boundaries as
+// screen-space quads (see shaders/line_quad.glsl for why), accumulated as
+// anti-aliased coverage with GL_MAX blending into the bound one-channel
+// framebuffer. Occlusion is tested against the surface depth texture.
+#pragma once
+
+#include "render/frame_params.h"
+#include "render/mesh_buffers.h"
+#include "render/render_settings.h"
+#include "render/shader_program.h"
+
+namespace kappa::render {
+
+class LineRenderer {
+public:
+    LineRenderer();  // compiles the shaders (GL context current)
+    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings,
+              GLuint surface_depth_texture);
+
+private:
+    void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
+                    const RenderSettings& settings);
+    ShaderProgram isolines_, boundaries_;
+};
+
+}  // namespace kappa::render

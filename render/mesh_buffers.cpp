@@ -1,0 +1,127 @@
+#include "render/mesh_buffers.h"
+
+#include "geometry/vertex_flags.h"
+#include "render/colormap.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace kappa::render {
+
+namespace {
+
+// One vertex as the shaders read it (shaders/mesh_attributes.glsl).
+struct GpuVertex {
+    glm::vec3 position, normal, d1, d2;
+    glm::vec2 curv;   // k1, k2
+    glm::vec4 dcurv;  // a, b, c, d
+    float unreliable;
+};
+
+// Edges used by exactly one face, as vertex index pairs. Only faces with
+// two or more boundary-flagged vertices can hold one, when flags exist.
+std::vector<uint32_t> boundary_edges(const Mesh& mesh, const SurfaceFields& fields) {
+    const bool use_flags = fields.flags.size() == mesh.positions.size();
+    if (use_flags && std::none_of(fields.flags.begin(), fields.flags.end(),
+                                  [](uint8_t f) { return f & kFlagBoundary; }))
+        return {};
+    auto on_boundary = [&](uint32_t v) { return !use_flags || (fields.flags[v] & kFlagBoundary); };
+    std::vector<uint64_t> keys;
+    for (const auto& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            uint32_t a = f[k], b = f[(k + 1) % 3];
+            if (!on_boundary(a) || !on_boundary(b)) continue;
+            keys.push_back(uint64_t(std::min(a, b)) << 32 | std::max(a, b));
+        }
+    std::sort(keys.begin(), keys.end());
+    std::vector<uint32_t> out;
+    for (size_t i = 0; i < keys.size();) {
+        size_t j = i;
+        while (j < keys.size() && keys[j] == keys[i]) ++j;
+        if (j - i == 1) out.push_back(uint32_t(keys[i] >> 32)), out.push_back(uint32_t(keys[i]));
+        i = j;
+    }
+    return out;
+}
+
+void set_attribute(GLuint location, int components, size_t offset) {
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, sizeof(GpuVertex),
+                          reinterpret_cast<const void*>(offset));
+}
+
+}  // namespace
+
+MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size)
+    : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()), feature_size_(feature_size) {
+    const size_t n = mesh.vertex_count();
+    if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
+        fields.d2.size() != n || fields.dcurv.size() != n)
+        throw std::invalid_argument("MeshBuffers: surface fields do not match the mesh's vertex count");
+    bounds_ = bounding_sphere(mesh);
+    for (size_t m = 0; m < ranges_.size(); ++m) ranges_[m] = robust_range(ColorMap(m), fields);
+
+    std::vector<GpuVertex> vertices(n);
+    for (size_t i = 0; i < n; ++i) {
+        const bool unreliable = fields.flags.size() == n && (fields.flags[i] & kFlagUnreliable);
+        vertices[i] = {mesh.positions[i], fields.normals[i], fields.d1[i], fields.d2[i],
+                       {fields.k1[i], fields.k2[i]}, fields.dcurv[i], unreliable ? 1.0f : 0.0f};
+    }
+
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(1, &vertex_buffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), GL_STATIC_DRAW);
+    set_attribute(0, 3, offsetof(GpuVertex, position));
+    set_attribute(1, 3, offsetof(GpuVertex, normal));
+    set_attribute(2, 3, offsetof(GpuVertex, d1));
+    set_attribute(3, 3, offsetof(GpuVertex, d2));
+    set_attribute(4, 2, offsetof(GpuVertex, curv));
+    set_attribute(5, 4, offsetof(GpuVertex, dcurv));
+    set_attribute(6, 1, offsetof(GpuVertex, unreliable));
+    glGenBuffers(1, &triangle_buffer_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.faces.size() * sizeof(Face)), mesh.faces.data(),
+                 GL_STATIC_DRAW);
+
+    // Boundary edges share the vertex buffer through a second VAO.
+    const std::vector<uint32_t> edges = boundary_edges(mesh, fields);
+    boundary_edges_ = edges.size() / 2;
+    glGenVertexArrays(1, &edge_vao_);
+    glBindVertexArray(edge_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    set_attribute(0, 3, offsetof(GpuVertex, position));
+    set_attribute(1, 3, offsetof(GpuVertex, normal));
+    set_attribute(2, 3, offsetof(GpuVertex, d1));
+    set_attribute(3, 3, offsetof(GpuVertex, d2));
+    set_attribute(4, 2, offsetof(GpuVertex, curv));
+    set_attribute(5, 4, offsetof(GpuVertex, dcurv));
+    set_attribute(6, 1, offsetof(GpuVertex, unreliable));
+    glGenBuffers(1, &edge_buffer_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_buffer_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+}
+
+MeshBuffers::~MeshBuffers() {
+    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, edge_buffer_};
+    glDeleteBuffers(3, buffers);
+    const GLuint arrays[] = {vao_, edge_vao_};
+    glDeleteVertexArrays(2, arrays);
+}
+
+void MeshBuffers::draw_triangles() const {
+    glBindVertexArray(vao_);
+    glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);
+}
+
+void MeshBuffers::draw_boundary_edges() const {
+    if (boundary_edges_ == 0) return;
+    glBindVertexArray(edge_vao_);
+    glDrawElements(GL_LINES, GLsizei(boundary_edges_ * 2), GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace kappa::render

@@ -1,0 +1,46 @@
+// The mesh and its curvature fields on the GPU, uploaded once: one
+// interleaved vertex buffer (position, normal, d1, d2, k1 k2, C, flags),
+// the triangles, and the open boundary edges. Every view-dependent quantity
+// is computed from these in the shaders, per frame.
+#pragma once
+
+#include "geometry/mesh.h"
+#include "geometry/surface_fields.h"
+#include "render/camera.h"
+#include "render/gl.h"
+#include "render/render_settings.h"
+
+#include <array>
+
+namespace kappa::render {
+
+class MeshBuffers {
+public:
+    // Uploads; needs a current GL context. fields must have one entry per
+    // vertex. feature_size: the mesh's feature size fs (geometry/feature_size.h).
+    MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size);
+    ~MeshBuffers();
+    MeshBuffers(const MeshBuffers&) = delete;
+    MeshBuffers& operator=(const MeshBuffers&) = delete;
+
+    void draw_triangles() const;       // GL_TRIANGLES over every face
+    void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
+
+    size_t vertex_count() const { return vertex_count_; }
+    size_t face_count() const { return face_count_; }
+    size_t boundary_edge_count() const { return boundary_edges_; }
+    float feature_size() const { return feature_size_; }
+    const BoundingSphere& bounds() const { return bounds_; }
+    // Robust colour-map range (render/colormap.h), computed at upload.
+    float map_range(ColorMap map) const { return ranges_[size_t(map)]; }
+
+private:
+    GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
+    GLuint edge_vao_ = 0, edge_buffer_ = 0;
+    size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0;
+    float feature_size_ = 1;
+    BoundingSphere bounds_;
+    std::array<float, 7> ranges_{};
+};
+
+}  // namespace kappa::render

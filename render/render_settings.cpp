@@ -1,0 +1,91 @@
+#include "render/render_settings.h"
+
+#include <algorithm>
+
+namespace kappa::render {
+
+namespace {
+
+template <typename E>
+std::optional<E> lookup(const std::vector<std::string>& names, const std::string& s) {
+    auto it = std::find(names.begin(), names.end(), s);
+    if (it == names.end()) return std::nullopt;
+    return E(it - names.begin());
+}
+
+}  // namespace
+
+// Word order matches the enum order.
+const std::vector<std::string>& shading_names() {
+    static const std::vector<std::string> n{"none", "lambert", "toon"};
+    return n;
+}
+const std::vector<std::string>& colormap_names() {
+    static const std::vector<std::string> n{"none", "k1", "k2", "mean", "gaussian", "principal", "dcurv"};
+    return n;
+}
+const std::vector<std::string>& hatching_names() {
+    static const std::vector<std::string> n{"none", "min", "max", "cross"};
+    return n;
+}
+const std::vector<std::string>& line_names() {
+    static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "none"};
+    return n;
+}
+
+std::optional<Shading> parse_shading(const std::string& s) { return lookup<Shading>(shading_names(), s); }
+std::optional<ColorMap> parse_colormap(const std::string& s) { return lookup<ColorMap>(colormap_names(), s); }
+std::optional<Hatching> parse_hatching(const std::string& s) { return lookup<Hatching>(hatching_names(), s); }
+
+std::optional<LineSelection> parse_lines(const std::string& list) {
+    LineSelection l{false, false, false};
+    std::vector<std::string> seen;
+    size_t start = 0;
+    for (;;) {
+        const size_t comma = list.find(',', start);
+        const std::string word = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (std::find(seen.begin(), seen.end(), word) != seen.end()) return std::nullopt;
+        seen.push_back(word);
+        if (word == "contours") l.contours = true;
+        else if (word == "suggestive") l.suggestive = true;
+        else if (word == "boundaries") l.boundaries = true;
+        else if (word != "none") return std::nullopt;
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    // "none" together with a line kind is contradictory.
+    if (std::find(seen.begin(), seen.end(), "none") != seen.end() && seen.size() > 1) return std::nullopt;
+    return l;
+}
+
+std::optional<glm::vec4> parse_background(const std::string& s) {
+    if (s == "white") return glm::vec4(1, 1, 1, 1);
+    if (s == "black") return glm::vec4(0, 0, 0, 1);
+    if (s == "transparent") return glm::vec4(1, 1, 1, 0);
+    if (s.size() != 7 || s[0] != '#') return std::nullopt;
+    glm::vec4 c(0, 0, 0, 1);
+    for (int i = 0; i < 3; ++i) {
+        int v = 0;
+        for (int k = 0; k < 2; ++k) {
+            const char ch = char(std::tolower(static_cast<unsigned char>(s[size_t(1 + 2 * i + k)])));
+            const int d = (ch >= '0' && ch <= '9') ? ch - '0' : (ch >= 'a' && ch <= 'f') ? ch - 'a' + 10 : -1;
+            if (d < 0) return std::nullopt;
+            v = v * 16 + d;
+        }
+        c[i] = float(v) / 255.0f;
+    }
+    return c;
+}
+
+std::string to_string(Shading s) { return shading_names()[size_t(s)]; }
+std::string to_string(ColorMap m) { return colormap_names()[size_t(m)]; }
+std::string to_string(Hatching h) { return hatching_names()[size_t(h)]; }
+std::string to_string(const LineSelection& l) {
+    std::string s;
+    if (l.contours) s += "contours";
+    if (l.suggestive) s += std::string(s.empty() ? "" : ",") + "suggestive";
+    if (l.boundaries) s += std::string(s.empty() ? "" : ",") + "boundaries";
+    return s.empty() ? "none" : s;
+}
+
+}  // namespace kappa::render

@@ -1,0 +1,63 @@
+// Everything that decides how a mesh is drawn: one structure shared by
+// `kappa render` (command-line options, conventions.md) and the viewer
+// (its UI edits the same fields). Plain data, no OpenGL.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kappa::render {
+
+enum class Shading { None, Lambert, Toon };
+enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
+enum class Hatching { None, Min, Max, Cross };
+
+struct LineSelection {
+    bool contours = true;     // occluding contours: zeros of n.v
+    bool suggestive = true;   // suggestive contours: zeros of kr with Dw kr > threshold / fs^2
+    bool boundaries = false;  // open mesh boundaries
+    bool any() const { return contours || suggestive || boundaries; }
+};
+
+struct RenderSettings {
+    LineSelection lines;
+    float line_width = 2.0f;           // pixels, constant at any zoom
+    float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
+    bool fade = true;                  // fade weak suggestive contours towards the threshold
+    glm::vec3 line_color{0, 0, 0};
+
+    Shading shading = Shading::Lambert;
+    glm::vec3 light_dir{-0.35f, 0.45f, 1.0f};  // towards the light, camera coordinates (x right, y up, z to the viewer)
+    ColorMap colormap = ColorMap::None;
+    bool colorbar = false;             // legend of the colour map in the image
+    Hatching hatching = Hatching::None;
+    float hatch_spacing = 6.0f;        // pixels between strokes
+
+    glm::vec4 background{1, 1, 1, 1};  // straight RGBA; alpha 0 = transparent
+    bool msaa = true;                  // 4x multisampling of the surface pass
+};
+
+// Names as on the command line (conventions.md). parse_* return nullopt for
+// an unknown word.
+const std::vector<std::string>& shading_names();
+const std::vector<std::string>& colormap_names();
+const std::vector<std::string>& hatching_names();
+const std::vector<std::string>& line_names();  // contours, suggestive, boundaries, none
+std::optional<Shading> parse_shading(const std::string& s);
+std::optional<ColorMap> parse_colormap(const std::string& s);
+std::optional<Hatching> parse_hatching(const std::string& s);
+// "contours,suggestive", "none"; nullopt for unknown or repeated words.
+std::optional<LineSelection> parse_lines(const std::string& list);
+// "white", "transparent", "#rrggbb" (also "black").
+std::optional<glm::vec4> parse_background(const std::string& s);
+
+std::string to_string(Shading s);
+std::string to_string(ColorMap m);
+std::string to_string(Hatching h);
+std::string to_string(const LineSelection& l);
+
+}  // namespace kappa::render

@@ -1,0 +1,57 @@
+// The line-drawing renderer: a mesh uploaded once, drawn per view with the
+// settings of render_settings.h into any framebuffer (an offscreen FBO for
+// `kappa render`, a window's default framebuffer for the viewer).
+//
+// Per frame: surface pass (optionally 4x MSAA) -> resolve into colour and
+// depth textures -> line passes into a coverage texture (depth-tested
+// against the surface depth) -> composite into the target -> colour bar.
+#pragma once
+
+#include "render/camera.h"
+#include "render/framebuffer.h"
+#include "render/line_renderer.h"
+#include "render/mesh_buffers.h"
+#include "render/render_settings.h"
+#include "render/screen_passes.h"
+#include "render/surface_renderer.h"
+
+#include <memory>
+
+namespace kappa::render {
+
+struct RenderTarget {
+    GLuint framebuffer = 0;  // 0: the window's default framebuffer
+    int width = 0, height = 0;
+};
+
+class Renderer {
+public:
+    Renderer();  // compiles every shader; needs a current GL 3.3 core context
+    ~Renderer();
+
+    // Uploads the mesh and its fields (replacing any previous mesh).
+    void set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size);
+    const MeshBuffers* mesh() const { return mesh_.get(); }
+
+    // Draws one view into `target`. Without a mesh, clears to the background.
+    void render(const Camera& camera, const RenderSettings& settings, const RenderTarget& target);
+
+private:
+    void ensure_buffers(int width, int height, bool msaa);
+
+    std::unique_ptr<MeshBuffers> mesh_;
+    SurfaceRenderer surface_pass_;
+    LineRenderer line_pass_;
+    Compositor compositor_;
+    ColorBar colorbar_;
+    Framebuffer surface_ms_fb_;  // multisampled surface (when MSAA is on)
+    Framebuffer surface_fb_;     // colour + depth textures
+    Framebuffer lines_fb_;
+};
+
+// Headless convenience: renders into an offscreen RGBA8 framebuffer of
+// width x height and reads it back (straight alpha, top row first).
+Image render_to_image(Renderer& renderer, const Camera& camera, const RenderSettings& settings, int width,
+                      int height);
+
+}  // namespace kappa::render

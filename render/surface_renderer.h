@@ -1,0 +1,22 @@
+// Surface pass: fills colour and depth with the shaded surface (paper,
+// Lambert or toon; colour maps; hatching).
+#pragma once
+
+#include "render/frame_params.h"
+#include "render/mesh_buffers.h"
+#include "render/render_settings.h"
+#include "render/shader_program.h"
+
+namespace kappa::render {
+
+class SurfaceRenderer {
+public:
+    SurfaceRenderer();  // compiles the shaders (GL context current)
+    // Draws into the bound framebuffer with depth testing.
+    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+
+private:
+    ShaderProgram program_;
+};
+
+}  // namespace kappa::render

@@ -1,0 +1,48 @@
+// Line passes, fragment stage: anti-aliased coverage of a segment of
+// constant width, hidden where the surface occludes its centre line.
+// Output goes to a one-channel coverage buffer blended with GL_MAX, so
+// overlapping caps at joints and crossing lines never darken twice.
+in LineFragment {
+    flat vec4 segment;
+    flat vec2 depth;
+    flat vec2 alpha;
+    flat float tolerance;
+} f_in;
+
+uniform float u_line_width;
+uniform sampler2D u_depth;    // surface depth (window depth, single-sampled)
+uniform vec2 u_depth_params;  // (P[2][2], P[3][2]) of the projection: window depth -> camera distance
+
+out float o_coverage;
+
+float camera_distance(float window_depth) {
+    return u_depth_params.y / (window_depth * 2.0 - 1.0 + u_depth_params.x);
+}
+
+void main() {
+    vec2 p = gl_FragCoord.xy;
+    vec2 a = f_in.segment.xy, ab = f_in.segment.zw - a;
+    float len2 = dot(ab, ab);
+    float t = len2 > 1e-12 ? clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    vec2 q = a + t * ab;  // closest point of the centre line
+    // Box-filtered coverage of a line of width w at distance d from its centre.
+    float coverage = clamp(0.5 * u_line_width + 0.5 - distance(p, q), 0.0, 1.0);
+    if (coverage <= 0.0) discard;
+
+    // Visibility is decided at q, not at p, so a visible line keeps its full
+    // width even where the surface beside it is nearer (at contours). The
+    // farthest surface depth in the 3x3 pixels around q absorbs the surface
+    // slope within a pixel; `tolerance` the gap between the smooth curve and
+    // the polygons.
+    ivec2 size = textureSize(u_depth, 0);
+    ivec2 qi = ivec2(floor(q));
+    float farthest = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            farthest = max(farthest, texelFetch(u_depth, clamp(qi + ivec2(dx, dy), ivec2(0), size - 1), 0).r);
+    if (farthest < 1.0) {
+        float line_distance = camera_distance(mix(f_in.depth.x, f_in.depth.y, t));
+        if (line_distance > camera_distance(farthest) + f_in.tolerance) discard;
+    }
+    o_coverage = coverage * mix(f_in.alpha.x, f_in.alpha.y, t);
+}
