@@ -1,0 +1,138 @@
+// `kappa curvature` end to end: the real executable, real files.
+#include "test_support.h"
+
+#include "geometry/io/mesh_io.h"
+#include "geometry/primitives.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace kappa;
+using kappa::test::run_command;
+
+namespace {
+
+const std::string kExe = KAPPA_EXE;
+
+void write_off(const std::string& path, const Mesh& m) {
+    std::ofstream f(path);
+    f.precision(9);
+    f << "OFF\n" << m.positions.size() << " " << m.faces.size() << " 0\n";
+    for (const auto& p : m.positions) f << p.x << " " << p.y << " " << p.z << "\n";
+    for (const auto& t : m.faces) f << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+}
+
+std::vector<std::vector<double>> read_csv_rows(const std::string& path, std::string& header) {
+    std::ifstream f(path);
+    std::getline(f, header);
+    std::vector<std::vector<double>> rows;
+    std::string line;
+    while (std::getline(f, line)) {
+        std::vector<double> row;
+        std::stringstream ss(line);
+        std::string cell;
+        while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+size_t count_lines(const std::string& text) {
+    size_t n = 0;
+    for (char c : text) n += c == '\n';
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("kappa curvature writes the CSV of conventions.md", "[cli][curvature]") {
+    const std::string dir = kappa::test::temp_dir();
+    const Mesh sphere = make_icosphere(2.0f, 3);
+    write_off(dir + "/sphere.off", sphere);
+    const auto r = run_command(kExe + " curvature " + dir + "/sphere.off -o " + dir + "/out.csv");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("642 vertices, 1280 faces") != std::string::npos);
+    std::string header;
+    const auto rows = read_csv_rows(dir + "/out.csv", header);
+    CHECK(header == "x,y,z,nx,ny,nz,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,a,b,c,d");
+    REQUIRE(rows.size() == sphere.positions.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+        REQUIRE(rows[i].size() == 18);
+        // Input order preserved, positions round-trip through %.9g exactly.
+        CHECK(float(rows[i][0]) == sphere.positions[i].x);
+        CHECK(float(rows[i][2]) == sphere.positions[i].z);
+        CHECK(rows[i][6] == Approx(0.5).epsilon(1e-4));  // k1 = 1/R
+        CHECK(rows[i][7] == Approx(0.5).epsilon(1e-4));
+        CHECK(rows[i][3] * sphere.positions[i].x + rows[i][4] * sphere.positions[i].y +
+                  rows[i][5] * sphere.positions[i].z == Approx(2.0).epsilon(1e-5));  // outward normal
+    }
+}
+
+TEST_CASE("kappa curvature writes a PLY that reads back", "[cli][curvature]") {
+    const std::string dir = kappa::test::temp_dir();
+    const Mesh torus = make_torus(1.0f, 0.3f, 40, 16);
+    write_off(dir + "/torus.off", torus);
+    for (const std::string fmt : {"", " --format ply-ascii"}) {
+        const auto r = run_command(kExe + " curvature " + dir + "/torus.off -o " + dir + "/out.ply" + fmt);
+        REQUIRE(r.exit_code == 0);
+        const Mesh back = load_mesh(dir + "/out.ply");
+        CHECK(back.positions.size() == torus.positions.size());
+        CHECK(back.faces.size() == torus.faces.size());
+        const std::string bytes = kappa::test::read_file(dir + "/out.ply");
+        for (const char* prop : {"property float k1", "property float k2", "property float d1x", "property float a",
+                                 "property float d", "property uchar flags"})
+            CHECK(bytes.find(prop) != std::string::npos);
+    }
+}
+
+TEST_CASE("kappa curvature output does not depend on the thread count", "[cli][curvature][determinism]") {
+    const std::string dir = kappa::test::temp_dir();
+    REQUIRE(run_command(kExe + " curvature --threads 1 --smooth-curvature 0.02 -o " + dir + "/one.csv").exit_code == 0);
+    REQUIRE(run_command(kExe + " curvature --threads 2 --smooth-curvature 0.02 -o " + dir + "/two.csv").exit_code == 0);
+    const std::string one = kappa::test::read_file(dir + "/one.csv");
+    CHECK(count_lines(one) > 10000);  // the built-in model
+    CHECK(one == kappa::test::read_file(dir + "/two.csv"));
+}
+
+TEST_CASE("kappa curvature reports bad input on one line with a non-zero exit", "[cli][curvature][errors]") {
+    const std::string dir = kappa::test::temp_dir();
+    SECTION("missing mesh") {
+        const auto r = run_command(kExe + " curvature " + dir + "/nope.ply -o " + dir + "/out.csv");
+        CHECK(r.exit_code == 1);
+        CHECK(count_lines(r.output) == 1);
+        CHECK(r.output.find("nope.ply") != std::string::npos);
+    }
+    SECTION("no output") {
+        const auto r = run_command(kExe + " curvature");
+        CHECK(r.exit_code == 2);
+        CHECK(count_lines(r.output) == 1);
+    }
+    SECTION("unknown output format") {
+        const auto r = run_command(kExe + " curvature -o " + dir + "/out.xyz");
+        CHECK(r.exit_code == 2);
+        CHECK(r.output.find("out.xyz") != std::string::npos);
+    }
+    SECTION("unwritable output") {
+        const auto r = run_command(kExe + " curvature -o " + dir + "/no/such/dir/out.csv");
+        CHECK(r.exit_code == 1);
+        CHECK(count_lines(r.output) == 1);
+        CHECK(r.output.find("out.csv") != std::string::npos);
+    }
+    SECTION("negative smoothing width") {
+        const auto r = run_command(kExe + " curvature -o " + dir + "/out.csv --smooth-normals -1");
+        CHECK(r.exit_code == 2);
+    }
+}
+
+TEST_CASE("kappa curvature --help documents the columns and options", "[cli][curvature]") {
+    const auto r = run_command(kExe + " curvature --help");
+    CHECK(r.exit_code == 0);
+    for (const char* s : {"x,y,z,nx,ny,nz,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,a,b,c,d", "--smooth-normals",
+                          "--smooth-curvature", "--smooth-dcurv", "--format", "--threads", "-o"})
+        CHECK(r.output.find(s) != std::string::npos);
+}
