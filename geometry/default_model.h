@@ -1,0 +1,19 @@
+// The built-in model shown when no mesh is given on the command line: a
+// smooth closed blob generated here (no file, no randomness), designed to
+// show every kind of line kappa draws from the default +z view: occluding
+// contours, suggestive contours (concave dents and a valley seen obliquely),
+// saddles (a ring of small alternating bumps) and a ridge for hatching.
+#pragma once
+
+#include "mesh.h"
+
+namespace kappa {
+
+// An icosphere subdivided 6 times (40,962 vertices, 81,920 faces), displaced
+// radially by a sum of smooth bumps, then stretched slightly, centred at the
+// origin (bounding-box centre) and scaled so that its farthest vertex lies at
+// distance 1. Closed, manifold, faces counter-clockwise seen from outside.
+// Identical on every call and machine that uses IEEE float arithmetic.
+Mesh make_default_model();
+
+}  // namespace kappa
