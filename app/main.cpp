@@ -31,6 +31,7 @@ const Command kCommands[] = {
     {"curvature", "estimate normals, curvature and its derivative per vertex; write CSV or PLY",
      kappa::app::run_curvature},
     {"info", "print mesh statistics: counts, bounds, edges, boundaries, components", kappa::app::run_info},
+    {"render", "draw contours, suggestive contours, shading, colour maps, hatching to a PNG (headless)", kappa::app::run_render},
 };
 
 std::vector<std::string> command_names() {

@@ -1,0 +1,225 @@
+// `kappa render [MESH] -o OUT.png [options]`: headless line drawing to PNG
+// (conventions.md, "Command line contract"). Curvature is estimated once,
+// uploaded once, then each view (one, or N with --turntable) is drawn by the
+// GLSL renderer in render/ into an offscreen framebuffer and written as an
+// 8-bit RGBA PNG.
+#include "cli_options.h"
+#include "commands.h"
+#include "mesh_source.h"
+#include "progress_bar.h"
+
+#include "geometry/feature_size.h"
+#include "geometry/io/mesh_io.h"
+#include "geometry/surface_analysis.h"
+#include "render/camera.h"
+#include "render/egl_context.h"
+#include "render/png_writer.h"
+#include "render/render_settings.h"
+#include "render/renderer.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+namespace kappa::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// OUT.png -> OUT-007.png for turntable view 7.
+std::string numbered_path(const std::string& path, int index) {
+    const auto dot = path.find_last_of('.');
+    const bool has_ext = dot != std::string::npos && path.find('/', dot) == std::string::npos;
+    char number[16];
+    std::snprintf(number, sizeof number, "-%03d", index);
+    return has_ext ? path.substr(0, dot) + number + path.substr(dot) : path + number + ".png";
+}
+
+// "on"/"off" options.
+cli::Parser::Setter on_off(bool& out) {
+    return [&out](const std::string& v) {
+        if (v != "on" && v != "off") return false;
+        out = v == "on";
+        return true;
+    };
+}
+
+template <typename E>
+cli::Parser::Setter word(E& out, std::optional<E> (*parse)(const std::string&)) {
+    return [&out, parse](const std::string& v) {
+        auto e = parse(v);
+        if (e) out = *e;
+        return bool(e);
+    };
+}
+
+}  // namespace
+
+int run_render(int argc, char** argv) {
+    std::string mesh_path, out_path, xf_path;
+    glm::ivec2 size{1024, 768};
+    glm::vec3 eye{0}, target{0}, up{0, 1, 0};
+    float fov = 30.0f;
+    int turntable = 0;
+    bool quiet = false;
+    SmoothingOptions smoothing;
+    render::RenderSettings s;
+    const auto join = [](const std::vector<std::string>& v) { return cli::join(v, "|"); };
+
+    cli::Parser p("render", "[MESH] -o OUT.png [options]",
+                  "Draw a mesh headless (EGL, no display needed) with occluding and suggestive contours, "
+                  "shading, curvature colour maps and hatching, and write an 8-bit RGBA PNG.");
+    p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl); default: the built-in model", false)
+        .text("-o,--output", out_path, "output PNG file", "OUT.png")
+        .size("--size", size, "image size in pixels (default 1024x768)")
+        .vec3("--eye", eye, "camera position (default: framing the model's bounding sphere from +z)")
+        .vec3("--target", target, "point the camera looks at (default: the bounding sphere's centre)")
+        .vec3("--up", up, "camera up direction (default 0,1,0)")
+        .number("--fov", fov, "vertical field of view in degrees (default 30; with --xf, rtsc's)", 1, 170, "DEG")
+        .text("--xf", xf_path, "trimesh2/rtsc viewpoint file (4x4 model-view matrix)", "FILE")
+        .option("--lines", "LIST", "lines to draw, comma list of: contours, suggestive, boundaries, none "
+                "(default contours,suggestive)", word(s.lines, render::parse_lines),
+                "a comma list of contours, suggestive, boundaries, or none")
+        .option("--shading", join(render::shading_names()), "surface shading (default lambert)",
+                word(s.shading, render::parse_shading), "one of " + cli::join(render::shading_names(), ", "))
+        .vec3("--light", s.light_dir, "direction towards the light in camera coordinates (x right, y up, "
+              "z towards the viewer; default -0.35,0.45,1)")
+        .option("--colormap", join(render::colormap_names()), "curvature colour map (default none)",
+                word(s.colormap, render::parse_colormap), "one of " + cli::join(render::colormap_names(), ", "))
+        .flag("--colorbar", s.colorbar, "draw the colour map's legend at the right edge")
+        .option("--hatching", join(render::hatching_names()),
+                "principal-direction hatching: strokes along the min or max direction, or both (default none)",
+                word(s.hatching, render::parse_hatching), "one of " + cli::join(render::hatching_names(), ", "))
+        .number("--hatch-spacing", s.hatch_spacing, "pixels between hatching strokes (default 6)", 2, 100, "PX")
+        .number("--sc-threshold", s.sc_threshold,
+                "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)", 0,
+                1e6, "S")
+        .number("--line-width", s.line_width, "line width in pixels (default 2)", 0.1, 64, "PX")
+        .option("--fade", "on|off", "fade weak suggestive contours (default on)", on_off(s.fade), "on or off")
+        .option("--background", "COLOR", "white, transparent, black or #rrggbb (default white)",
+                [&](const std::string& v) {
+                    auto c = render::parse_background(v);
+                    if (c) s.background = *c;
+                    return bool(c);
+                },
+                "white, transparent, black or #rrggbb")
+        .option("--msaa", "on|off", "4x multisampling of the surface (default on)", on_off(s.msaa), "on or off")
+        .integer("--turntable", turntable, "write N views around the model: OUT-000.png ... (default: one view)",
+                 1, 100000)
+        .number("--smooth-normals", smoothing.normals,
+                "Gaussian smoothing width (sigma, model units) for normals before curvature; 0 = off", 0)
+        .number("--smooth-curvature", smoothing.curvature,
+                "Gaussian smoothing width for the curvature tensor; 0 = off", 0)
+        .number("--smooth-dcurv", smoothing.dcurv, "Gaussian smoothing width for C; 0 = off", 0)
+        .flag("-q,--quiet", quiet, "print nothing but errors")
+        .threads()
+        .epilog("With --shading none --colormap none the surface is white and only lines are dark.\n"
+                "The feature size fs (geometry/feature_size.h) makes --sc-threshold the same on every mesh.\n"
+                "Examples:\n"
+                "  kappa render bunny.ply -o bunny.png --smooth-curvature 0.001\n"
+                "  kappa render -o blob.png --shading none --eye 0,-2.6,1.85 --line-width 2.5\n"
+                "  kappa render bunny.ply -o turn.png --turntable 12 --size 512x512");
+    if (auto status = p.parse(argc, argv)) return *status;
+    if (out_path.empty()) {
+        std::fprintf(stderr, "kappa render: missing -o OUT.png (see 'kappa render --help')\n");
+        return 2;
+    }
+    const bool look_at = p.seen("--eye") || p.seen("--target") || p.seen("--up");
+    if (!xf_path.empty() && look_at) {
+        std::fprintf(stderr, "kappa render: --xf cannot be combined with --eye/--target/--up\n");
+        return 2;
+    }
+
+    try {
+        const auto t_load = Clock::now();
+        const Mesh mesh = load_mesh_or_default(mesh_path);
+        const double load_s = seconds_since(t_load);
+
+        ProgressBar bar(!quiet && mesh.face_count() >= 200000);
+        StageTimes times;
+        const SurfaceFields fields =
+            compute_surface_fields(mesh, smoothing, &times, [&](float f, const char* stage) { bar.update(f, stage); });
+        bar.finish();
+        const auto t_fs = Clock::now();
+        const float fs = feature_size(mesh, fields);
+        const double fs_s = seconds_since(t_fs);
+
+        // Camera: .xf file, eye/target/up, or framing the bounding sphere.
+        const render::BoundingSphere bounds = render::bounding_sphere(mesh);
+        const float aspect = float(size.x) / float(size.y);
+        render::Camera camera;
+        glm::vec3 orbit_center = bounds.center;
+        if (!xf_path.empty()) {
+            camera.view = render::read_xf(xf_path);
+            camera.fov_y_deg = p.seen("--fov") ? fov : render::rtsc_fov_y_deg(size.x, size.y);
+        } else {
+            camera = render::Camera::framing(bounds, fov, aspect);
+            if (look_at) {
+                if (!p.seen("--eye")) eye = camera.eye();
+                if (!p.seen("--target")) target = bounds.center;
+                if (glm::length(glm::cross(target - eye, up)) < 1e-12f * glm::length(target - eye) ||
+                    glm::length(target - eye) == 0)
+                    throw cli::UsageError("kappa render: --eye and --target must differ, and --up must not be "
+                                          "parallel to the viewing direction");
+                camera = render::Camera::look_at(eye, target, up, fov);
+                orbit_center = target;
+            }
+        }
+
+        const auto t_context = Clock::now();
+        std::unique_ptr<render::HeadlessContext> context;
+        try {
+            context = render::HeadlessContext::create();
+        } catch (const render::ContextError& e) {
+            return cli::fail(e.what());
+        }
+        render::Renderer renderer;
+        const double context_s = seconds_since(t_context);
+        const auto t_upload = Clock::now();
+        renderer.set_mesh(mesh, fields, fs);
+        const double upload_s = seconds_since(t_upload);
+
+        if (!quiet) {
+            std::printf("%s: %zu vertices, %zu faces, feature size %.6g\n", mesh_display_name(mesh_path).c_str(),
+                        mesh.vertex_count(), mesh.face_count(), fs);
+            std::printf("  load %.3f s, curvature %.3f s (normals %.3f, curvature %.3f, dcurv %.3f, smoothing %.3f), "
+                        "feature size %.3f s\n",
+                        load_s, times.total(), times.normals, times.curvature, times.dcurv, times.smoothing, fs_s);
+            std::printf("  %s (context + shaders %.3f s), upload %.3f s\n", context->description().c_str(), context_s,
+                        upload_s);
+            if (s.colormap != render::ColorMap::None)
+                std::printf("  colour map %s over %s%.6g]\n", render::to_string(s.colormap).c_str(),
+                            s.colormap == render::ColorMap::DCurv ? "[0, " : "[-",
+                            renderer.mesh()->map_range(s.colormap));
+        }
+
+        // The turntable turns around the camera's up axis through the target.
+        const glm::vec3 axis = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 1, 0, 0));
+        const int views = std::max(turntable, 1);
+        for (int i = 0; i < views; ++i) {
+            const render::Camera view =
+                turntable ? camera.orbited(orbit_center, axis, float(2 * M_PI * i / views)) : camera;
+            const auto t_render = Clock::now();
+            const render::Image image = render::render_to_image(renderer, view, s, size.x, size.y);
+            const double render_s = seconds_since(t_render);
+            const std::string path = turntable ? numbered_path(out_path, i) : out_path;
+            const auto t_write = Clock::now();
+            render::write_png(path, image);
+            if (!quiet)
+                std::printf("  wrote %s (%dx%d): render %.3f s, write %.3f s\n", path.c_str(), size.x, size.y,
+                            render_s, seconds_since(t_write));
+        }
+        return 0;
+    } catch (const MeshLoadError& e) {
+        return cli::fail(e.what());
+    }
+}
+
+}  // namespace kappa::app
