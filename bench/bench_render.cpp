@@ -1,0 +1,105 @@
+// Frame time of the line-drawing renderer at 1024x768 (issue 3, "Speed"):
+// median of 20 frames, for plain Lambertian shading and for contours +
+// suggestive contours + hatching, on the default model and bunny-1M.ply.
+//   bench_render [--size WxH] [--frames N] [MESH ...]   (default: built-in model and
+//   ../shared/meshes/bunny-1M.ply)
+#include "geometry/default_model.h"
+#include "geometry/feature_size.h"
+#include "geometry/io/mesh_io.h"
+#include "geometry/surface_analysis.h"
+#include "render/egl_context.h"
+#include "render/framebuffer.h"
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace kappa;
+
+namespace {
+
+struct Config {
+    const char* name;
+    render::RenderSettings settings;
+};
+
+double median_frame_ms(render::Renderer& renderer, const render::Camera& camera, const render::RenderSettings& s,
+                       const render::Framebuffer& target, int frames) {
+    const int w = target.spec().width, h = target.spec().height;
+    renderer.render(camera, s, {target.id(), w, h});  // warm-up: shader compilation, buffer allocation
+    glFinish();
+    std::vector<double> ms;
+    for (int i = 0; i < frames; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        renderer.render(camera, s, {target.id(), w, h});
+        glFinish();
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int width = 1024, height = 768, frames = 20;
+    std::vector<std::string> meshes;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
+        else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
+        else meshes.push_back(argv[i]);
+    }
+    if (meshes.empty()) meshes = {"", "../shared/meshes/bunny-1M.ply"};
+
+    std::unique_ptr<render::HeadlessContext> context;
+    try {
+        context = render::HeadlessContext::create();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_render: %s\n", e.what());
+        return 1;
+    }
+    std::printf("%s\n%dx%d, median of %d frames\n", context->description().c_str(), width, height, frames);
+
+    render::RenderSettings plain;
+    plain.lines = {false, false, false};
+    render::RenderSettings lines = plain;
+    lines.lines = {true, true, false};
+    render::RenderSettings all = lines;
+    all.hatching = render::Hatching::Cross;
+    std::vector<Config> configs = {{"lambert", plain}, {"lambert+contours+suggestive", lines},
+                                   {"lambert+contours+suggestive+hatching", all}};
+    for (auto& c : configs) c.settings.msaa = false;
+    auto with_msaa = configs;
+    for (auto& c : with_msaa) c.settings.msaa = true;
+
+    render::Renderer renderer;
+    render::Framebuffer target({width, height, 0, GL_RGBA8, false});
+    for (const auto& path : meshes) {
+        Mesh mesh;
+        try {
+            mesh = path.empty() ? make_default_model() : load_mesh(path);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "bench_render: %s\n", e.what());
+            return 1;
+        }
+        const SurfaceFields fields = compute_surface_fields(mesh);
+        renderer.set_mesh(mesh, fields, feature_size(mesh, fields));
+        const auto camera = render::Camera::framing(renderer.mesh()->bounds(), 30.0f, float(width) / float(height));
+        std::printf("\n%s: %zu vertices, %zu faces\n", path.empty() ? "built-in model" : path.c_str(),
+                    mesh.vertex_count(), mesh.face_count());
+        for (const auto* set : {&configs, &with_msaa}) {
+            double base = 0;
+            for (const auto& c : *set) {
+                const double ms = median_frame_ms(renderer, camera, c.settings, target, frames);
+                if (&c == &set->front()) base = ms;
+                std::printf("  %-40s %s  %8.2f ms  (%+.0f%%)\n", c.name, c.settings.msaa ? "msaa 4x" : "no msaa",
+                            ms, 100.0 * (ms / base - 1.0));
+            }
+        }
+    }
+    return 0;
+}
