@@ -1,13 +1,20 @@
-// tinyobjloader's own triangulation is not used: it splits quads along the
-// shorter diagonal and ear-clips larger polygons, silently dropping faces with
-// invalid indices. Loading untriangulated and fan-triangulating here keeps
-// the result identical to the other formats and lets every index be checked.
+// tinyobjloader parses the faces (all corner syntaxes, relative indices,
+// groups). Two of its behaviours are worked around:
+// - its triangulation splits quads along the shorter diagonal, ear-clips
+//   larger polygons and silently drops faces with invalid indices, so faces
+//   are loaded untriangulated and fan-triangulated here (as in every other
+//   format), with every index checked;
+// - it reads an unparsable coordinate ("nan", "inf", "abc", a missing z) as
+//   0 without a warning, so the `v` lines are also read here, with the same
+//   line splitting, and every coordinate must be a finite number.
 #include "obj_io.h"
 
 #include "mesh_assembly.h"
+#include "text_cursor.h"
 
 #include <tiny_obj_loader.h>
 
+#include <cmath>
 #include <istream>
 #include <streambuf>
 
@@ -23,6 +30,43 @@ public:
         setg(p, p, p + size);
     }
 };
+
+// tinyobjloader's line splitting (safeGetline): "\n", "\r\n" or "\r".
+// Calls on_vertex(line_number, text after "v") for each `v` statement.
+template <typename OnVertex>
+void for_each_vertex_line(const char* data, size_t size, OnVertex&& on_vertex) {
+    size_t line_number = 0, pos = 0;
+    while (pos < size) {
+        size_t end = pos;
+        while (end < size && data[end] != '\n' && data[end] != '\r') ++end;
+        ++line_number;
+        size_t p = pos;
+        while (p < end && (data[p] == ' ' || data[p] == '\t')) ++p;
+        if (end - p >= 2 && data[p] == 'v' && (data[p + 1] == ' ' || data[p + 1] == '\t'))
+            on_vertex(line_number, std::string_view(data + p + 2, end - p - 2));
+        pos = end + 1;
+        if (end < size && data[end] == '\r' && pos < size && data[pos] == '\n') ++pos;
+    }
+}
+
+// The positions of all `v` statements, in order; x y z must be finite
+// numbers (a fourth w or r g b colour values may follow and are ignored).
+std::vector<glm::vec3> read_positions(const char* data, size_t size, const std::string& name) {
+    std::vector<glm::vec3> positions;
+    for_each_vertex_line(data, size, [&](size_t line, std::string_view text) {
+        TextCursor cursor(text.data(), text.data() + text.size());
+        glm::vec3 p;
+        for (int a = 0; a < 3; ++a) {
+            std::string_view token = cursor.token();
+            if (token.empty() || !parse_number(token, p[a]) || !std::isfinite(p[a]))
+                fail_load(name, "line " + std::to_string(line) + ": vertex " + std::to_string(positions.size()) +
+                                    (token.empty() ? std::string(" has fewer than 3 coordinates")
+                                                   : " has a bad coordinate " + quoted(token)));
+        }
+        positions.push_back(p);
+    });
+    return positions;
+}
 
 std::string first_line(const std::string& text) {
     size_t end = text.find('\n');
@@ -49,10 +93,11 @@ Mesh read_obj(const char* data, size_t size, const std::string& name) {
     if (!ok) fail_load(name, "OBJ parse error: " + first_line(errors.empty() ? "unknown error" : errors));
 
     Mesh mesh;
-    const size_t vertex_count = attrib.vertices.size() / 3;
-    mesh.positions.resize(vertex_count);
-    for (size_t i = 0; i < vertex_count; ++i)
-        mesh.positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
+    mesh.positions = read_positions(data, size, name);
+    const size_t vertex_count = mesh.positions.size();
+    if (attrib.vertices.size() != 3 * vertex_count)
+        fail_load(name, "OBJ parser found " + std::to_string(attrib.vertices.size() / 3) + " vertices, expected " +
+                            std::to_string(vertex_count));
 
     std::vector<int64_t> polygon;
     uint64_t face_number = 0;

@@ -266,7 +266,7 @@ Mesh read_ply(const char* data, size_t size, const std::string& name) {
     const char* body = data + header.body_offset;
     const char* end = data + size;
     if (header.format == PlyFormat::Ascii) {
-        AsciiSource source(body, end);
+        AsciiSource source(data, body, end);
         read_body(source, header, name, mesh, false);
     } else {
         bool file_little = header.format == PlyFormat::BinaryLittleEndian;

@@ -99,7 +99,10 @@ private:
 // breaks are not significant, as in most PLY readers).
 class AsciiSource {
 public:
-    AsciiSource(const char* begin, const char* end) : cursor_(begin, end) {}
+    // file_start: for line numbers in messages; reading starts at body.
+    AsciiSource(const char* file_start, const char* body, const char* end) : cursor_(file_start, end) {
+        cursor_.set_position(body);
+    }
 
     const TextCursor& cursor() const { return cursor_; }
     std::string_view last_token() const { return last_; }

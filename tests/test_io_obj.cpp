@@ -1,0 +1,39 @@
+// OBJ through tinyobjloader: vertex order and count kept, corner syntaxes,
+// relative indices, polygons fan-triangulated, other statements ignored.
+#include "test_io_support.h"
+
+using namespace kappa;
+using kappa::test::obj_from;
+
+TEST_CASE("OBJ: v/vt/vn corner forms, negative indices, quads as fans", "[io][obj]") {
+    Mesh m = obj_from(
+        "# comment\nmtllib missing.mtl\no square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nusemtl none\ns 1\n"
+        "f 1/1/1 2/2/1 3/3/1 4//1\n"
+        "g other\nv 2 0 0\nf -1 2 3\nf 5/1 4/2 1/3\nl 1 2\np 3\n");
+    REQUIRE(m.vertex_count() == 5);
+    CHECK(m.positions[4] == glm::vec3(2, 0, 0));
+    CHECK(m.faces == std::vector<Face>{{0, 1, 2}, {0, 2, 3}, {4, 1, 2}, {4, 3, 0}});
+}
+
+TEST_CASE("OBJ: unreferenced vertices are kept, in file order", "[io][obj]") {
+    Mesh m = obj_from("v 9 9 9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf 2 3 4\n");
+    REQUIRE(m.vertex_count() == 5);
+    CHECK(m.positions[0] == glm::vec3(9, 9, 9));
+    CHECK(m.positions[4] == glm::vec3(5, 5, 5));
+    CHECK(m.faces == std::vector<Face>{{1, 2, 3}});
+}
+
+TEST_CASE("OBJ: polygons, vertex colours, CR line endings, exact coordinates", "[io][obj]") {
+    Mesh m = obj_from("v 0 0 0 1 0 0\rv 1 0 0 0 1 0\rv 2 1 0\rv 1 2 0\rv 0 2 0\rv -1 1 0.1\rf 1 2 3 4 5 6\r");
+    REQUIRE(m.vertex_count() == 6);
+    CHECK(m.positions[5] == glm::vec3(-1, 1, 0.1f));  // correctly rounded, as from_chars
+    REQUIRE(m.face_count() == 4);
+    for (uint32_t k = 0; k < 4; ++k) CHECK(m.faces[k] == Face(0, k + 1, k + 2));
+}
+
+TEST_CASE("OBJ: a file of vertices only is a point cloud", "[io][obj]") {
+    Mesh m = obj_from("v 1 2 3\nv 4 5 6\n");
+    CHECK(m.vertex_count() == 2);
+    CHECK(m.face_count() == 0);
+}
