@@ -2,11 +2,10 @@
 // size of a mesh, one "name: value" line each (easy to read and to grep).
 #include "cli_options.h"
 #include "commands.h"
+#include "mesh_source.h"
 #include "progress_bar.h"
 
-#include "geometry/default_model.h"
 #include "geometry/feature_size.h"
-#include "geometry/io/mesh_io.h"
 #include "geometry/mesh_stats.h"
 #include "geometry/surface_analysis.h"
 
@@ -76,14 +75,14 @@ int run_info(int argc, char** argv) {
 
     auto start = std::chrono::steady_clock::now();
     // load_mesh throws MeshLoadError("PATH: problem"); main prints it, exit 1.
-    const Mesh mesh = mesh_path.empty() ? make_default_model() : load_mesh(mesh_path);
+    const Mesh mesh = load_mesh_or_default(mesh_path);
     const double load_s = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
     const MeshStats stats = compute_mesh_stats(mesh);
     const double stats_s = seconds_since(start);
 
-    print_line("mesh", mesh_path.empty() ? "built-in default model" : mesh_path);
+    print_line("mesh", mesh_display_name(mesh_path));
     print_stats(stats);
 
     double curvature_s = 0;
