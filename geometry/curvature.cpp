@@ -1,6 +1,5 @@
 #include "curvature.h"
 
-#include "degenerate.h"
 #include "ldlt.h"
 #include "parallel.h"
 
@@ -16,22 +15,21 @@ namespace {
 // The normal equations in (e, f, g) form a 3x3 SPD system.
 bool fit_face_tensor(const glm::dvec3 (&e)[3], const glm::dvec3 (&dn)[3], const glm::dvec3& t, const glm::dvec3& b,
                      Tensor2& out) {
-    double w[3][3] = {}, m[3] = {};
+    // Normal equations [[uu, uv, 0], [uv, uu + vv, uv], [0, uv, vv]] (e, f, g)^T = m.
+    double uu = 0, uv = 0, vv = 0, m[3] = {};
     for (int j = 0; j < 3; ++j) {
         const double u = glm::dot(e[j], t), v = glm::dot(e[j], b);
         const double dnu = glm::dot(dn[j], t), dnv = glm::dot(dn[j], b);
-        w[0][0] += u * u;
-        w[0][1] += u * v;
-        w[2][2] += v * v;
+        uu += u * u;
+        uv += u * v;
+        vv += v * v;
         m[0] += dnu * u;
         m[1] += dnu * v + dnv * u;
         m[2] += dnv * v;
     }
-    w[1][0] = w[0][1];
-    w[1][1] = w[0][0] + w[2][2];
-    w[1][2] = w[2][1] = w[0][1];
+    const double diag[3] = {uu, uu + vv, vv}, off[2] = {uv, uv};
     double x[3];
-    if (!ldlt_solve(w, m, x)) return false;
+    if (!ldlt_solve_tridiagonal<3>(diag, off, m, x)) return false;
     out = {float(x[0]), float(x[1]), float(x[2])};
     return true;
 }
@@ -39,8 +37,8 @@ bool fit_face_tensor(const glm::dvec3 (&e)[3], const glm::dvec3 (&dn)[3], const 
 }  // namespace
 
 VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
-                                        const std::vector<glm::vec3>& normals,
-                                        const std::vector<glm::vec3>& corner_areas, FaceFits& fits) {
+                                        const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
+                                        FaceFits& fits) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     fits.t.assign(nf, glm::vec3(0.0f));
     fits.b.assign(nf, glm::vec3(0.0f));
@@ -53,9 +51,10 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
         const Face& f = mesh.faces[i];
         const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
         const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
-        if (is_degenerate_triangle(e[0], e[1], e[2])) return;
+        if (faces.degenerate(i)) return;
         const glm::dvec3 t = glm::normalize(e[0]);
-        const glm::dvec3 b = glm::cross(glm::normalize(glm::cross(e[0], e[1])), t);
+        const glm::dvec3 n = glm::normalize(glm::dvec3(faces.area_normals[i]));
+        const glm::dvec3 b = glm::cross(n, t);
         const glm::dvec3 dn[3] = {glm::dvec3(normals[f[2]]) - glm::dvec3(normals[f[1]]),
                                   glm::dvec3(normals[f[0]]) - glm::dvec3(normals[f[2]]),
                                   glm::dvec3(normals[f[1]]) - glm::dvec3(normals[f[0]])};
@@ -63,11 +62,13 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
         if (!fit_face_tensor(e, dn, t, b, face_tensor)) return;
         fits.t[i] = glm::vec3(t);
         fits.b[i] = glm::vec3(b);
+        const glm::vec3 nf(n);
         for (int j = 0; j < 3; ++j) {
+            const glm::vec3& nv = normals[f[j]];
             glm::vec3 u, v;
-            tangent_frame(normals[f[j]], u, v);
-            const FrameChange m = frame_change(fits.t[i], fits.b[i], u, v);
-            const float w = corner_areas[i][j];
+            tangent_frame(nv, u, v);
+            const FrameChange m = frame_change(fits.t[i], fits.b[i], nf, u, v, nv);
+            const float w = faces.corner_areas[i][j];
             const Tensor2 r = transform_tensor(m, face_tensor);
             fits.corner_frames[3 * i + j] = m;
             fits.corner_weights[3 * i + j] = w;

@@ -11,6 +11,7 @@
 // thread, so results do not depend on the thread count.
 #pragma once
 
+#include "face_geometry.h"
 #include "mesh.h"
 #include "tensor_frames.h"
 #include "vertex_faces.h"
@@ -40,11 +41,10 @@ struct VertexTensors {
     std::vector<Tensor2> tensor;
 };
 
-// Steps 1 to 3 up to the averaged tensors. `normals` are unit length,
-// `corner_areas` from compute_corner_areas.
+// Steps 1 to 3 up to the averaged tensors. `normals` are unit length.
 VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
-                                        const std::vector<glm::vec3>& normals,
-                                        const std::vector<glm::vec3>& corner_areas, FaceFits& fits);
+                                        const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
+                                        FaceFits& fits);
 
 // Diagonalisation: k1 >= k2, d1 x d2 = n = u x v.
 void principal_curvatures(const VertexTensors& tensors, std::vector<float>& k1, std::vector<float>& k2,

@@ -28,9 +28,10 @@ bool fit_face_dcurv(const glm::dvec3 (&e)[3], const Tensor2 (&fcurv)[3], const g
         m[2] += 2.0 * v * dkuv + u * dkv;
         m[3] += v * dkv;
     }
-    const double w[4][4] = {{uu, uv, 0, 0}, {uv, 2 * uu + vv, 2 * uv, 0}, {0, 2 * uv, uu + 2 * vv, uv}, {0, 0, uv, vv}};
+    // [[uu, uv, 0, 0], [uv, 2uu + vv, 2uv, 0], [0, 2uv, uu + 2vv, uv], [0, 0, uv, vv]] (a, b, c, d)^T = m
+    const double diag[4] = {uu, 2 * uu + vv, uu + 2 * vv, vv}, off[3] = {uv, 2 * uv, uv};
     double x[4];
-    if (!ldlt_solve(w, m, x)) return false;
+    if (!ldlt_solve_tridiagonal<4>(diag, off, m, x)) return false;
     out = glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3]));
     return true;
 }

@@ -1,26 +1,23 @@
 #include "normals.h"
 
-#include "degenerate.h"
 #include "parallel.h"
 
 #include <glm/geometric.hpp>
 
+#include <cmath>
+
 namespace kappa {
 
-std::vector<glm::vec3> compute_vertex_normals(const Mesh& mesh, const VertexFaces& vf) {
-    std::vector<glm::vec3> normals(mesh.vertex_count());
-    parallel_for(mesh.vertex_count(), [&](size_t v) {
+std::vector<glm::vec3> compute_vertex_normals(const VertexFaces& vf, const FaceGeometry& faces) {
+    const size_t nv = vf.offsets.size() - 1;
+    std::vector<glm::vec3> normals(nv);
+    parallel_for(nv, [&](size_t v) {
         glm::dvec3 sum(0.0);
         for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) {
-            const uint32_t c = vf.corners[k];
-            const Face& f = mesh.faces[c / 3];
-            const int j = int(c % 3);
-            const glm::dvec3 p = mesh.positions[f[j]];
-            const glm::dvec3 a = glm::dvec3(mesh.positions[f[(j + 1) % 3]]) - p;  // edges leaving v
-            const glm::dvec3 b = glm::dvec3(mesh.positions[f[(j + 2) % 3]]) - p;
-            if (is_degenerate_triangle(a, b, b - a)) continue;
-            // (a x b) has length 2*area; dividing by |a|^2 |b|^2 gives Max's weight.
-            sum += glm::cross(a, b) / (glm::dot(a, a) * glm::dot(b, b));
+            const uint32_t c = vf.corners[k], f = c / 3, j = c % 3;
+            // The two edges at corner j are those opposite the other two corners.
+            const glm::vec3& il2 = faces.inv_edge_len2[f];
+            sum += glm::dvec3(faces.area_normals[f]) * (double(il2[(j + 1) % 3]) * il2[(j + 2) % 3]);
         }
         const double len = glm::length(sum);
         normals[v] = len > 0 && std::isfinite(len) ? glm::vec3(sum / len) : glm::vec3(0.0f);

@@ -4,7 +4,7 @@
 // Exact for vertices whose one-ring lies on a sphere.
 #pragma once
 
-#include "mesh.h"
+#include "face_geometry.h"
 #include "vertex_faces.h"
 
 #include <glm/vec3.hpp>
@@ -14,6 +14,6 @@ namespace kappa {
 
 // Unit normals; a vertex with no non-degenerate face gets the zero vector
 // (the caller flags it and substitutes a fallback).
-std::vector<glm::vec3> compute_vertex_normals(const Mesh& mesh, const VertexFaces& vf);
+std::vector<glm::vec3> compute_vertex_normals(const VertexFaces& vf, const FaceGeometry& faces);
 
 }  // namespace kappa

@@ -2,6 +2,7 @@
 
 #include "curvature.h"
 #include "dcurvature.h"
+#include "face_geometry.h"
 #include "normals.h"
 #include "smoothing.h"
 #include "vertex_faces.h"
@@ -45,18 +46,18 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
     }
 
     report(0.1f, "areas");
-    std::vector<glm::vec3> corner_areas;
+    FaceGeometry faces;
     {
         StageTimer timer(&t.areas);
-        corner_areas = compute_corner_areas(mesh);
-        out.point_areas = compute_point_areas(vf, corner_areas);
+        faces = compute_face_geometry(mesh);
+        out.point_areas = compute_point_areas(vf, faces.corner_areas);
         out.flags = compute_vertex_flags(mesh, vf, out.point_areas);
     }
 
     report(0.2f, "normals");
     {
         StageTimer timer(&t.normals);
-        out.normals = compute_vertex_normals(mesh, vf);
+        out.normals = compute_vertex_normals(vf, faces);
     }
     if (smoothing.normals > 0) {
         report(0.25f, "smoothing normals");
@@ -72,7 +73,7 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
     VertexTensors tensors;
     {
         StageTimer timer(&t.curvature);
-        tensors = compute_curvature_tensors(mesh, vf, out.normals, corner_areas, fits);
+        tensors = compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
     }
     if (smoothing.curvature > 0) {
         report(0.5f, "smoothing curvature");

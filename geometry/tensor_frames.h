@@ -91,13 +91,20 @@ struct FrameChange {
     FrameChange transposed() const { return {m00, m10, m01, m11}; }
 };
 
-// The rotated frame (u, v) of a vertex, seen in a face's frame (t, b) (the
-// coefficients project_tensor computes). Its transpose maps the other way:
-// the rotation is orthogonal.
-inline FrameChange frame_change(const glm::vec3& t, const glm::vec3& b, const glm::vec3& u, const glm::vec3& v) {
-    glm::vec3 ru, rv;
-    rotate_frame(u, v, glm::cross(t, b), ru, rv);
-    return {glm::dot(ru, t), glm::dot(ru, b), glm::dot(rv, t), glm::dot(rv, b)};
+// The vertex frame (u, v) (normal nv = u x v), rotated into the plane of the
+// face frame (t, b) (normal nf = t x b) by rotate_frame, in (t, b)
+// coordinates: the coefficients project_tensor computes, in closed form.
+// With k = 1 / (1 + nv.nf), rotate_frame maps x (tangent to nv) to
+// x - (nv + nf) k (x.nf), and t.nf = b.nf = 0. The transpose maps the other
+// way: the rotation is orthogonal.
+inline FrameChange frame_change(const glm::vec3& t, const glm::vec3& b, const glm::vec3& nf, const glm::vec3& u,
+                                const glm::vec3& v, const glm::vec3& nv) {
+    const float ndot = glm::dot(nv, nf);
+    if (ndot <= -1.0f) return {-glm::dot(u, t), -glm::dot(u, b), -glm::dot(v, t), -glm::dot(v, b)};
+    const float k = 1.0f / (1.0f + ndot);
+    const float at = glm::dot(nv, t) * k, ab = glm::dot(nv, b) * k;
+    const float un = glm::dot(u, nf), vn = glm::dot(v, nf);
+    return {glm::dot(u, t) - at * un, glm::dot(u, b) - ab * un, glm::dot(v, t) - at * vn, glm::dot(v, b) - ab * vn};
 }
 
 // T in the new frame: M T M^T.

@@ -1,73 +1,91 @@
-// The small LDL^T solver behind the per-face fits, on non-diagonal systems.
+// The LDL^T solver behind the per-face fits, on non-diagonal systems.
 #include "geometry/ldlt.h"
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 using namespace kappa;
 
 namespace {
 
-// A = M^T M + diag(shift): symmetric positive definite, dense.
+// Dense Gaussian elimination with partial pivoting: an independent reference.
 template <int N>
-void random_spd(std::mt19937& rng, double (&A)[N][N], double shift) {
-    std::uniform_real_distribution<double> u(-1, 1);
-    double M[N][N];
-    for (auto& row : M)
-        for (double& x : row) x = u(rng);
-    for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j) {
-            A[i][j] = i == j ? shift : 0.0;
-            for (int k = 0; k < N; ++k) A[i][j] += M[k][i] * M[k][j];
+void dense_solve(double (&A)[N][N], double (&b)[N], double (&x)[N]) {
+    for (int k = 0; k < N; ++k) {
+        int p = k;
+        for (int i = k + 1; i < N; ++i)
+            if (std::fabs(A[i][k]) > std::fabs(A[p][k])) p = i;
+        for (int j = 0; j < N; ++j) std::swap(A[k][j], A[p][j]);
+        std::swap(b[k], b[p]);
+        for (int i = k + 1; i < N; ++i) {
+            const double f = A[i][k] / A[k][k];
+            for (int j = k; j < N; ++j) A[i][j] -= f * A[k][j];
+            b[i] -= f * b[k];
         }
+    }
+    for (int i = N - 1; i >= 0; --i) {
+        double s = b[i];
+        for (int j = i + 1; j < N; ++j) s -= A[i][j] * x[j];
+        x[i] = s / A[i][i];
+    }
 }
 
+// Random SPD tridiagonal systems with strong off-diagonals.
 template <int N>
 void check_random_systems() {
     std::mt19937 rng(7 + N);
-    std::uniform_real_distribution<double> u(-10, 10);
-    for (int trial = 0; trial < 500; ++trial) {
-        double A[N][N], b[N], x_true[N], x[N];
-        random_spd<N>(rng, A, 0.05);
-        for (double& v : x_true) v = u(rng);
+    std::uniform_real_distribution<double> u(-1, 1), pos(0.2, 2);
+    int checked = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        double diag[N], off[N - 1], rhs[N], x[N], A[N][N] = {}, b[N], ref[N];
+        for (int i = 0; i < N; ++i) diag[i] = pos(rng);
+        for (int i = 0; i + 1 < N; ++i) off[i] = u(rng) * std::sqrt(diag[i] * diag[i + 1]) * 0.45;  // Gershgorin: stays SPD
+        for (int i = 0; i < N; ++i) rhs[i] = 10 * u(rng);
         for (int i = 0; i < N; ++i) {
-            b[i] = 0;
-            for (int j = 0; j < N; ++j) b[i] += A[i][j] * x_true[j];
+            A[i][i] = diag[i];
+            if (i + 1 < N) A[i][i + 1] = A[i + 1][i] = off[i];
+            b[i] = rhs[i];
         }
-        REQUIRE(ldlt_solve<N>(A, b, x));
-        // Condition numbers here stay below ~1e4, so 1e-9 relative is generous for double.
-        for (int i = 0; i < N; ++i) REQUIRE(x[i] == Approx(x_true[i]).margin(1e-9 * 10).epsilon(1e-9));
+        REQUIRE(ldlt_solve_tridiagonal<N>(diag, off, rhs, x));
+        dense_solve<N>(A, b, ref);
+        for (int i = 0; i < N; ++i) REQUIRE(x[i] == Approx(ref[i]).epsilon(1e-9).margin(1e-9));
+        ++checked;
     }
+    CHECK(checked == 2000);
 }
 
 }  // namespace
 
-TEST_CASE("ldlt_solve solves dense 3x3 and 4x4 SPD systems", "[solver]") {
+TEST_CASE("ldlt_solve_tridiagonal agrees with dense elimination on 3x3 and 4x4 systems", "[solver]") {
     check_random_systems<3>();
     check_random_systems<4>();
 }
 
-TEST_CASE("ldlt_solve handles the curvature normal equations' coupling exactly", "[solver]") {
-    // The 3x3 system of a single face: [[uu, uv, 0], [uv, uu+vv, uv], [0, uv, vv]], with a strong
-    // off-diagonal. A shortcut that ignores the (1,2) coupling gets this wrong by several percent.
+TEST_CASE("ldlt_solve_tridiagonal solves the curvature normal equations exactly", "[solver]") {
+    // One face's system [[uu, uv, 0], [uv, uu+vv, uv], [0, uv, vv]] with a strong coupling: a shortcut
+    // that drops the (1,2) coupling gets this wrong by several percent.
     const double uu = 2.0, uv = 0.9, vv = 1.1;
-    const double A[3][3] = {{uu, uv, 0}, {uv, uu + vv, uv}, {0, uv, vv}};
+    const double diag[3] = {uu, uu + vv, vv}, off[2] = {uv, uv};
     const double x_true[3] = {1.0, -0.5, 0.25};
-    double b[3], x[3];
-    for (int i = 0; i < 3; ++i) b[i] = A[i][0] * x_true[0] + A[i][1] * x_true[1] + A[i][2] * x_true[2];
-    REQUIRE(ldlt_solve<3>(A, b, x));
+    const double b[3] = {uu * x_true[0] + uv * x_true[1], uv * x_true[0] + (uu + vv) * x_true[1] + uv * x_true[2],
+                         uv * x_true[1] + vv * x_true[2]};
+    double x[3];
+    REQUIRE(ldlt_solve_tridiagonal<3>(diag, off, b, x));
     for (int i = 0; i < 3; ++i) CHECK(x[i] == Approx(x_true[i]).epsilon(1e-12));
 }
 
-TEST_CASE("ldlt_solve refuses singular and non-finite systems", "[solver]") {
-    const double singular[3][3] = {{1, 1, 0}, {1, 1, 0}, {0, 0, 1}};
-    const double zero[3][3] = {};
-    const double nan_sys[3][3] = {{NAN, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+TEST_CASE("ldlt_solve_tridiagonal refuses singular and non-finite systems", "[solver]") {
     const double b[3] = {1, 2, 3};
     double x[3] = {42, 42, 42};
-    CHECK_FALSE(ldlt_solve<3>(singular, b, x));
-    CHECK_FALSE(ldlt_solve<3>(zero, b, x));
-    CHECK_FALSE(ldlt_solve<3>(nan_sys, b, x));
+    const double sd[3] = {1, 1, 1}, so[2] = {1, 0};  // rows 0 and 1 equal: singular
+    CHECK_FALSE(ldlt_solve_tridiagonal<3>(sd, so, b, x));
+    const double zd[3] = {0, 0, 0}, zo[2] = {0, 0};
+    CHECK_FALSE(ldlt_solve_tridiagonal<3>(zd, zo, b, x));
+    const double nd[3] = {NAN, 1, 1}, no[2] = {0, 0};
+    CHECK_FALSE(ldlt_solve_tridiagonal<3>(nd, no, b, x));
+    const double indefinite[3] = {1, -1, 1}, io[2] = {0, 0};
+    CHECK_FALSE(ldlt_solve_tridiagonal<3>(indefinite, io, b, x));
     CHECK(x[0] == 42);  // untouched on failure
 }
