@@ -114,3 +114,17 @@ TEST_CASE("--threads is accepted before the command and by the command", "[cli][
         CHECK(r.output.find("--threads expects") != std::string::npos);
     }
 }
+
+TEST_CASE("negative vector values reach the option, bad ones are named", "[cli][main]") {
+    const auto names = listed_commands(run_command(kExe + " --help").output);
+    if (std::find(names.begin(), names.end(), "render") == names.end()) return;  // built without the renderer
+    // Parsing stops at --help, after --eye took "0,-2.6,1.85" as its value.
+    CHECK(run_command(kExe + " render --eye 0,-2.6,1.85 --help").exit_code == 0);
+    CHECK(run_command(kExe + " render --eye=0,-2.6,1.85 --help").exit_code == 0);
+    const auto bad = run_command(kExe + " render --eye 0,-2.6 --help");
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.output == "kappa render: --eye expects X,Y,Z, got '0,-2.6'\n");
+    const auto size = run_command(kExe + " render --size 12");
+    CHECK(size.exit_code == 2);
+    CHECK(size.output == "kappa render: --size expects WxH, got '12'\n");
+}
