@@ -3,12 +3,12 @@
 //  1. per face, a least-squares fit of the second fundamental tensor
 //     II = [[e, f], [f, g]] in a frame (t, b) of the face plane, from the
 //     differences of vertex normals along the three edges: II * e_j = dn_j;
-//  2. per face corner, that tensor re-expressed in the corner vertex's
-//     tangent frame, rotated into the face plane first (sec. 3.3);
-//  3. per vertex, the corner tensors averaged with mixed-Voronoi corner-area
-//     weights, then diagonalised into principal curvatures and directions.
-// Steps 1-2 run per face, step 3 per vertex: every output is written by one
-// thread, so results do not depend on the thread count.
+//  2. per vertex, the tensors of its faces re-expressed in the vertex's
+//     tangent frame, after rotating that frame into each face's plane
+//     (sec. 3.3), and averaged with mixed-Voronoi corner-area weights;
+//  3. diagonalisation into principal curvatures and directions.
+// Step 1 runs per face, steps 2-3 per vertex: every output is written by one
+// thread, in a fixed order, so results do not depend on the thread count.
 #pragma once
 
 #include "face_geometry.h"
@@ -21,23 +21,22 @@
 
 namespace kappa {
 
-// What the curvature step learns about each face and corner; the
-// derivative-of-curvature step reuses it.
+// What the curvature step learns about each face; the derivative-of-curvature
+// step reuses it.
 struct FaceFits {
     // Orthonormal frame (t, b) in each face's plane, t along the edge from
-    // corner 1 to corner 2, t x b the face normal; zero for degenerate faces.
+    // corner 1 to corner 2, t x b the face normal.
     std::vector<glm::vec3> t, b;
-    // Per corner (3 f + j): the corner vertex's tangent frame (u, v),
-    // rotated into the face plane, in (t, b) coordinates.
-    std::vector<FrameChange> corner_frames;
-    // Per corner: its mixed-Voronoi area, or 0 where the face is unusable
-    // (degenerate, or its fit failed).
-    std::vector<float> corner_weights;
+    // The fitted second fundamental tensor in (t, b).
+    std::vector<Tensor2> tensor;
+    // 1 where the face is usable: not degenerate and its fit succeeded.
+    std::vector<uint8_t> ok;
 };
 
-// Curvature tensor per vertex, in the tangent frame (u, v) = tangent_frame(n).
+// Curvature tensor per vertex, in the vertex's tangent frame
+// tangent_frame(normal) (frames are recomputed from the normals wherever
+// needed rather than stored).
 struct VertexTensors {
-    std::vector<glm::vec3> u, v;
     std::vector<Tensor2> tensor;
 };
 
@@ -46,8 +45,8 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
                                         const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
                                         FaceFits& fits);
 
-// Diagonalisation: k1 >= k2, d1 x d2 = n = u x v.
-void principal_curvatures(const VertexTensors& tensors, std::vector<float>& k1, std::vector<float>& k2,
+// Diagonalisation: k1 >= k2, d1 x d2 = n.
+void principal_curvatures(const VertexTensors& tensors, const std::vector<glm::vec3>& normals, std::vector<float>& k1, std::vector<float>& k2,
                           std::vector<glm::vec3>& d1, std::vector<glm::vec3>& d2);
 
 }  // namespace kappa

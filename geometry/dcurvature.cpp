@@ -38,45 +38,55 @@ bool fit_face_dcurv(const glm::dvec3 (&e)[3], const Tensor2 (&fcurv)[3], const g
 
 }  // namespace
 
+namespace {
+
+// A vertex's tangent frame (u, v) for normal n, rotated into face f's plane, in (t, b) coordinates.
+FrameChange vertex_in_face(const FaceFits& fits, size_t f, const glm::vec3& u, const glm::vec3& v,
+                           const glm::vec3& n) {
+    const glm::vec3 &t = fits.t[f], &b = fits.b[f];
+    return frame_change(t, b, glm::cross(t, b), u, v, n);
+}
+
+}  // namespace
+
 std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, const FaceFits& fits,
+                                     const std::vector<glm::vec3>& corner_areas, const std::vector<glm::vec3>& normals,
                                      const VertexTensors& tensors, const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-    // Per corner: the face's C in the corner vertex's (d1, d2) frame, times the corner weight.
-    std::vector<glm::vec4> corner_dcurv(3 * nf, glm::vec4(0.0f));
-    std::vector<float> corner_weight(3 * nf, 0.0f);
-
+    std::vector<glm::vec4> face_dcurv(nf);
+    std::vector<uint8_t> face_ok(nf, 0);
     parallel_for(nf, [&](size_t i) {
-        if (fits.corner_weights[3 * i] + fits.corner_weights[3 * i + 1] + fits.corner_weights[3 * i + 2] <= 0) return;
+        if (!fits.ok[i]) return;
         const Face& f = mesh.faces[i];
         const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
         const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};
-        // Vertex tensors in the face frame: the inverse (transposed) rotation of the curvature step.
+        // Vertex tensors in the face frame: the inverse (transposed) rotation.
         Tensor2 fcurv[3];
-        for (int j = 0; j < 3; ++j)
-            fcurv[j] = transform_tensor(fits.corner_frames[3 * i + j].transposed(), tensors.tensor[f[j]]);
-        glm::vec4 face_dcurv;
-        if (!fit_face_dcurv(e, fcurv, fits.t[i], fits.b[i], face_dcurv)) return;
         for (int j = 0; j < 3; ++j) {
-            const uint32_t v = f[j];
-            // (d1, d2) = (c u - s v, s u + c v) in the vertex frame, composed with the rotation into the face.
-            const float c = glm::dot(d1[v], tensors.u[v]), s = -glm::dot(d1[v], tensors.v[v]);
-            const FrameChange& r = fits.corner_frames[3 * i + j];
-            const FrameChange m{c * r.m00 - s * r.m10, c * r.m01 - s * r.m11, s * r.m00 + c * r.m10,
-                                s * r.m01 + c * r.m11};
-            const float w = fits.corner_weights[3 * i + j];
-            corner_dcurv[3 * i + j] = w * transform_dcurv(m, face_dcurv);
-            corner_weight[3 * i + j] = w;
+            glm::vec3 u, v;
+            tangent_frame(normals[f[j]], u, v);
+            fcurv[j] = transform_tensor(vertex_in_face(fits, i, u, v, normals[f[j]]).transposed(), tensors.tensor[f[j]]);
         }
+        face_ok[i] = fit_face_dcurv(e, fcurv, fits.t[i], fits.b[i], face_dcurv[i]);
     });
 
     std::vector<glm::vec4> dcurv(nv, glm::vec4(0.0f));
     parallel_for(nv, [&](size_t vi) {
+        // (d1, d2) = (c u - s v, s u + c v) in the vertex frame (u, v).
+        glm::vec3 u, v;
+        tangent_frame(normals[vi], u, v);
+        const float c = glm::dot(d1[vi], u), s = -glm::dot(d1[vi], v);
         glm::dvec4 sum(0.0);
         double wsum = 0;
         for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
-            const uint32_t c = vf.corners[k];
-            sum += glm::dvec4(corner_dcurv[c]);
-            wsum += corner_weight[c];
+            const uint32_t corner = vf.corners[k], fi = corner / 3;
+            if (!face_ok[fi]) continue;
+            const double w = corner_areas[fi][corner % 3];
+            const FrameChange r = vertex_in_face(fits, fi, u, v, normals[vi]);
+            const FrameChange m{c * r.m00 - s * r.m10, c * r.m01 - s * r.m11, s * r.m00 + c * r.m10,
+                                s * r.m01 + c * r.m11};
+            sum += w * glm::dvec4(transform_dcurv(m, face_dcurv[fi]));
+            wsum += w;
         }
         if (wsum > 0) dcurv[vi] = glm::vec4(sum / wsum);
     });

@@ -18,7 +18,7 @@ struct FaceGeometry {
     // Mixed Voronoi area of each corner (voronoi_areas.h); they sum to the face area.
     std::vector<glm::vec3> corner_areas;
 
-    bool degenerate(size_t f) const { return area_normals[f] == glm::vec3(0.0f); }
+    bool degenerate(size_t f) const { return corner_areas[f] == glm::vec3(0.0f); }
 };
 
 FaceGeometry compute_face_geometry(const Mesh& mesh);

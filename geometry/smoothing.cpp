@@ -82,7 +82,10 @@ void smooth_curvature_tensors(const SmoothingContext& ctx, float sigma, VertexTe
     for_each_neighbourhood(
         ctx, sigma, [&](size_t i) { acc[i] = glm::dvec3(0.0); },
         [&](size_t i, uint32_t j, float w) {
-            const Tensor2 r = project_tensor(tensors.u[j], tensors.v[j], tensors.tensor[j], tensors.u[i], tensors.v[i]);
+            glm::vec3 ui, vi, uj, vj;
+            tangent_frame(ctx.normals[i], ui, vi);
+            tangent_frame(ctx.normals[j], uj, vj);
+            const Tensor2 r = project_tensor(uj, vj, tensors.tensor[j], ui, vi);
             acc[i] += double(w) * glm::dvec3(r.ku, r.kuv, r.kv);
         },
         [&](size_t i, double sum_w) {

@@ -58,6 +58,7 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
     {
         StageTimer timer(&t.normals);
         out.normals = compute_vertex_normals(vf, faces);
+        std::vector<glm::vec3>().swap(faces.inv_edge_len2);  // only normals need it: free it early
     }
     if (smoothing.normals > 0) {
         report(0.25f, "smoothing normals");
@@ -74,6 +75,7 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
     {
         StageTimer timer(&t.curvature);
         tensors = compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
+        std::vector<glm::vec3>().swap(faces.area_normals);
     }
     if (smoothing.curvature > 0) {
         report(0.5f, "smoothing curvature");
@@ -82,13 +84,14 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
     }
     {
         StageTimer timer(&t.curvature);
-        principal_curvatures(tensors, out.k1, out.k2, out.d1, out.d2);
+        principal_curvatures(tensors, out.normals, out.k1, out.k2, out.d1, out.d2);
     }
 
     report(0.65f, "derivative of curvature");
     {
         StageTimer timer(&t.dcurv);
-        out.dcurv = compute_dcurv(mesh, vf, fits, tensors, out.d1);
+        std::vector<Tensor2>().swap(fits.tensor);  // not needed any more
+        out.dcurv = compute_dcurv(mesh, vf, fits, faces.corner_areas, out.normals, tensors, out.d1);
     }
     if (smoothing.dcurv > 0) {
         report(0.8f, "smoothing derivative");

@@ -1,5 +1,9 @@
-// tinyobjloader parses the faces (all corner syntaxes, relative indices,
-// groups). Two of its behaviours are worked around:
+// tinyobjloader parses the faces (all corner syntaxes, relative indices).
+// Three of its behaviours are worked around:
+// - it only sees the `v` and `f` statements (the others are blanked, keeping
+//   line numbers): nothing else is used, and some of its other parsers have
+//   undefined behaviour on hostile input (fuzzing found a float-to-int
+//   overflow in its `vw` skin-weight extension);
 // - its triangulation splits quads along the shorter diagonal, ear-clips
 //   larger polygons and silently drops faces with invalid indices, so faces
 //   are loaded untriangulated and fan-triangulated here (as in every other
@@ -31,10 +35,11 @@ public:
     }
 };
 
-// tinyobjloader's line splitting (safeGetline): "\n", "\r\n" or "\r".
-// Calls on_vertex(line_number, text after "v") for each `v` statement.
-template <typename OnVertex>
-void for_each_vertex_line(const char* data, size_t size, OnVertex&& on_vertex) {
+// Calls on_line(line_number, statement, line) for each line, split as
+// tinyobjloader's safeGetline does ("\n", "\r\n" or "\r"); statement is
+// 'v' or 'f' for those statements (keyword then a space or tab), else 0.
+template <typename OnLine>
+void for_each_line(const char* data, size_t size, OnLine&& on_line) {
     size_t line_number = 0, pos = 0;
     while (pos < size) {
         size_t end = pos;
@@ -42,19 +47,33 @@ void for_each_vertex_line(const char* data, size_t size, OnVertex&& on_vertex) {
         ++line_number;
         size_t p = pos;
         while (p < end && (data[p] == ' ' || data[p] == '\t')) ++p;
-        if (end - p >= 2 && data[p] == 'v' && (data[p + 1] == ' ' || data[p + 1] == '\t'))
-            on_vertex(line_number, std::string_view(data + p + 2, end - p - 2));
+        char statement = 0;
+        if (end - p >= 2 && (data[p] == 'v' || data[p] == 'f') && (data[p + 1] == ' ' || data[p + 1] == '\t'))
+            statement = data[p];
+        on_line(line_number, statement, std::string_view(data + p, end - p));
         pos = end + 1;
         if (end < size && data[end] == '\r' && pos < size && data[pos] == '\n') ++pos;
     }
+}
+
+// The `v` and `f` lines of the file, other lines left empty.
+std::string vertex_and_face_lines(const char* data, size_t size) {
+    std::string out;
+    out.reserve(size);
+    for_each_line(data, size, [&](size_t, char statement, std::string_view line) {
+        if (statement) out += line;
+        out += '\n';
+    });
+    return out;
 }
 
 // The positions of all `v` statements, in order; x y z must be finite
 // numbers (a fourth w or r g b colour values may follow and are ignored).
 std::vector<glm::vec3> read_positions(const char* data, size_t size, const std::string& name) {
     std::vector<glm::vec3> positions;
-    for_each_vertex_line(data, size, [&](size_t line, std::string_view text) {
-        TextCursor cursor(text.data(), text.data() + text.size());
+    for_each_line(data, size, [&](size_t line, char statement, std::string_view text) {
+        if (statement != 'v') return;
+        TextCursor cursor(text.data() + 2, text.data() + text.size());
         glm::vec3 p;
         for (int a = 0; a < 3; ++a) {
             std::string_view token = cursor.token();
@@ -81,7 +100,8 @@ std::string first_line(const std::string& text) {
 Mesh read_obj(const char* data, size_t size, const std::string& name) {
     using namespace io;
     if (size == 0) fail_load(name, "file is empty");
-    MemoryBuffer buffer(data, size);
+    const std::string statements = vertex_and_face_lines(data, size);
+    MemoryBuffer buffer(statements.data(), statements.size());
     std::istream stream(&buffer);
 
     tinyobj::attrib_t attrib;

@@ -110,7 +110,9 @@ bool read_vertices_fast(const char*& pos, const char* end, const PlyElement& ele
     size_t n = size_t(element.count);
     reserve_prefaulted(out, n);
     out.resize(n);
-    if (stride == 12 && offset[0] == 0 && offset[1] == 4 && offset[2] == 8) {
+    if (n == 0) {
+        // nothing to copy (and memcpy must not see the null data())
+    } else if (stride == 12 && offset[0] == 0 && offset[1] == 4 && offset[2] == 8) {
         std::memcpy(static_cast<void*>(out.data()), pos, n * 12);
     } else {
         for (size_t i = 0; i < n; ++i) {
