@@ -13,7 +13,7 @@ namespace kappa {
 // radially by a sum of smooth bumps, then stretched slightly, centred at the
 // origin (bounding-box centre) and scaled so that its farthest vertex lies at
 // distance 1. Closed, manifold, faces counter-clockwise seen from outside.
-// Identical on every call and machine that uses IEEE float arithmetic.
+// Deterministic: fixed parameters, no randomness, identical on every call.
 Mesh make_default_model();
 
 }  // namespace kappa

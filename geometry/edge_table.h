@@ -32,8 +32,9 @@ inline bool is_valid_face(const Face& f, size_t vertex_count) {
 
 // Counting sort of the half-edges by their smaller vertex, then a sort of each
 // vertex's short bucket by the larger vertex: O(V + F) plus tiny sorts.
-// Deterministic (independent of the thread count). About 40 ms for the
-// 1.1M-face bunny on 2 cores, most of it first-touch page faults.
+// Deterministic (independent of the thread count). Tens of milliseconds for
+// the 1.1M-face bunny (bench/bench_topology.cpp); big buffers are prefaulted
+// because first-touch page faults otherwise dominate on VMs.
 EdgeTable build_edge_table(const Mesh& mesh);
 
 }  // namespace kappa

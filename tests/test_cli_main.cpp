@@ -102,7 +102,7 @@ TEST_CASE("unknown commands and options: one line, exit 2", "[cli][main]") {
     }
 }
 
-TEST_CASE("--threads is accepted before the command and by the command", "[cli][main]") {
+TEST_CASE("global and per-command --threads", "[cli][main]") {
     CHECK(run_command(kExe + " --threads 1 info --no-curvature").exit_code == 0);
     CHECK(run_command(kExe + " --threads=2 info --no-curvature").exit_code == 0);
     CHECK(run_command(kExe + " info --no-curvature --threads 1").exit_code == 0);

@@ -146,7 +146,7 @@ TEST_CASE("choices, enums and comma lists", "[cli][options]") {
         CHECK(help.find(word) != std::string::npos);
 }
 
-TEST_CASE("--threads sets the worker count; --help stops parsing", "[cli][options]") {
+TEST_CASE("threads option sets the worker count, help stops parsing", "[cli][options]") {
     Parser p("info", "", "Description.");
     p.threads();
     CHECK(parse(p, {"--threads", "3"}).empty());
