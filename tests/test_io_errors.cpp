@@ -165,6 +165,9 @@ TEST_CASE("load errors: truncated files and wrong counts", "[io][errors]") {
     SECTION("binary STL whose size does not match its triangle count") {
         std::string stl = Bytes().text(std::string(80, ' ')).le(uint32_t(3)).str() + std::string(100, '\0');
         REQUIRE_LOAD_ERROR(stl_from(stl), "test.stl", "declares 3 triangles");
+        // Also when the binary header starts with "solid".
+        std::string solid = Bytes().text("solid" + std::string(75, ' ')).le(uint32_t(3)).str() + std::string(100, '\0');
+        REQUIRE_LOAD_ERROR(stl_from(solid), "test.stl", "declares 3 triangles (234 bytes) but the file has 184 bytes");
     }
     SECTION("ascii STL cut inside a facet, and a facet with 4 corners") {
         REQUIRE_LOAD_ERROR(stl_from("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0"), "test.stl",

@@ -5,6 +5,7 @@
 #include "text_cursor.h"
 #include "vertex_weld.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -114,7 +115,10 @@ bool looks_like_binary_stl(const char* data, size_t size) {
 
 bool looks_like_ascii_stl(const char* data, size_t size) {
     TextCursor cursor(data, data + size);
-    return equals_ignoring_case(cursor.token(), "solid");
+    if (!equals_ignoring_case(cursor.token(), "solid")) return false;
+    // Binary exporters often start their header with "solid" too; a NUL byte
+    // early on (float data, count bytes) means binary, whatever the size.
+    return std::memchr(data, 0, std::min<size_t>(size, 1024)) == nullptr;
 }
 
 }  // namespace io
@@ -128,7 +132,7 @@ Mesh read_stl(const char* data, size_t size, const std::string& name) {
         mesh = read_ascii(data, size, name);
     } else if (size >= kHeaderSize) {
         uint64_t n = declared_triangles(data);
-        fail_load(name, "not a valid STL file: no 'solid' keyword, and as binary STL its header declares " +
+        fail_load(name, "not a valid STL file: not ASCII STL, and as binary STL its header declares " +
                             std::to_string(n) + " triangles (" + std::to_string(kHeaderSize + n * kTriangleSize) +
                             " bytes) but the file has " + std::to_string(size) + " bytes");
     } else {
