@@ -97,7 +97,7 @@ int run_render(int argc, char** argv) {
         .option("--hatching", join(render::hatching_names()),
                 "principal-direction hatching: strokes along the min or max direction, or both (default none)",
                 word(s.hatching, render::parse_hatching), "one of " + cli::join(render::hatching_names(), ", "))
-        .number("--hatch-spacing", s.hatch_spacing, "pixels between hatching strokes (default 6)", 2, 100, "PX")
+        .number("--hatch-spacing", s.hatch_spacing, "pixels between hatching strokes in the darkest tone (default 4)", 2, 100, "PX")
         .number("--sc-threshold", s.sc_threshold,
                 "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)", 0,
                 1e6, "S")

@@ -1,5 +1,7 @@
 #include "render/line_renderer.h"
 
+#include <glm/geometric.hpp>
+
 namespace kappa::render {
 
 namespace {
@@ -12,7 +14,12 @@ std::vector<ShaderStage> line_program(const char* geometry_file) {
 
 }  // namespace
 
-LineRenderer::LineRenderer() : isolines_(line_program("isolines_geom.glsl")), boundaries_(line_program("boundary_geom.glsl")) {}
+LineRenderer::LineRenderer()
+    : isolines_(line_program("isolines_geom.glsl")),
+      boundaries_(line_program("boundary_geom.glsl")),
+      hatching_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "hatch_vert.glsl"}},
+                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "hatch_geom.glsl"}},
+                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {}
 
 void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                               const RenderSettings& s) {
@@ -47,6 +54,17 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {
         set_common(boundaries_, mesh, frame, s);
         mesh.draw_boundary_edges();
+    }
+    if (s.hatching != Hatching::None) {
+        set_common(hatching_, mesh, frame, s);
+        hatching_.set("u_normal_matrix", frame.normal_matrix);
+        const float len = glm::length(s.light_dir);
+        hatching_.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
+        hatching_.set("u_hatching", int(s.hatching));
+        hatching_.set("u_hatch_spacing", s.hatch_spacing);
+        hatching_.set("u_stroke_length", s.hatch_stroke_length);
+        hatching_.set("u_stroke_width", s.hatch_stroke_width);
+        mesh.draw_triangles();
     }
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);

@@ -1,5 +1,6 @@
-// Line passes: occluding contours, suggestive contours and boundaries as
-// screen-space quads (see shaders/line_quad.glsl for why), accumulated as
+// Line passes: occluding contours, suggestive contours, boundaries and
+// hatching strokes as screen-space quads (see shaders/line_quad.glsl for
+// why), accumulated as
 // anti-aliased coverage with GL_MAX blending into the bound one-channel
 // framebuffer. Occlusion is tested against the surface depth texture.
 #pragma once
@@ -20,7 +21,7 @@ public:
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                     const RenderSettings& settings);
-    ShaderProgram isolines_, boundaries_;
+    ShaderProgram isolines_, boundaries_, hatching_;
 };
 
 }  // namespace kappa::render

@@ -35,7 +35,9 @@ struct RenderSettings {
     ColorMap colormap = ColorMap::None;
     bool colorbar = false;             // legend of the colour map in the image
     Hatching hatching = Hatching::None;
-    float hatch_spacing = 6.0f;        // pixels between strokes
+    float hatch_spacing = 4.0f;        // pixels between strokes in the darkest tone
+    float hatch_stroke_length = 16.0f; // pixels
+    float hatch_stroke_width = 1.25f;  // pixels
 
     glm::vec4 background{1, 1, 1, 1};  // straight RGBA; alpha 0 = transparent
     bool msaa = true;                  // 4x multisampling of the surface pass

@@ -6,21 +6,18 @@ namespace kappa::render {
 
 SurfaceRenderer::SurfaceRenderer()
     : program_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "colormap.glsl", "surface_vert.glsl"}},
-                {GL_FRAGMENT_SHADER, {"colormap.glsl", "hatching.glsl", "surface_frag.glsl"}}}) {}
+                {GL_FRAGMENT_SHADER, {"colormap.glsl", "surface_frag.glsl"}}}) {}
 
 void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
     program_.use();
     program_.set("u_mvp", frame.mvp);
     program_.set("u_model_view", frame.model_view);
     program_.set("u_normal_matrix", frame.normal_matrix);
-    program_.set("u_viewport", frame.viewport);
     program_.set("u_shading", int(s.shading));
     const float len = glm::length(s.light_dir);
     program_.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
     program_.set("u_colormap", int(s.colormap));
     program_.set("u_map_range", mesh.map_range(s.colormap));
-    program_.set("u_hatching", int(s.hatching));
-    program_.set("u_hatch_spacing", s.hatch_spacing);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);

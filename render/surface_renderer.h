@@ -1,5 +1,5 @@
 // Surface pass: fills colour and depth with the shaded surface (paper,
-// Lambert or toon; colour maps; hatching).
+// Lambert or toon; colour maps).
 #pragma once
 
 #include "render/frame_params.h"

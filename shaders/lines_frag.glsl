@@ -7,9 +7,10 @@ in LineFragment {
     flat vec2 depth;
     flat vec2 alpha;
     flat float tolerance;
+    flat float width;
+    flat float on_surface;
 } f_in;
 
-uniform float u_line_width;
 uniform sampler2D u_depth;    // surface depth (window depth, single-sampled)
 uniform vec2 u_depth_params;  // (P[2][2], P[3][2]) of the projection: window depth -> camera distance
 
@@ -26,7 +27,7 @@ void main() {
     float t = len2 > 1e-12 ? clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
     vec2 q = a + t * ab;  // closest point of the centre line
     // Box-filtered coverage of a line of width w at distance d from its centre.
-    float coverage = clamp(0.5 * u_line_width + 0.5 - distance(p, q), 0.0, 1.0);
+    float coverage = clamp(0.5 * f_in.width + 0.5 - distance(p, q), 0.0, 1.0);
     if (coverage <= 0.0) discard;
 
     // Visibility is decided at q, not at p, so a visible line keeps its full
@@ -40,6 +41,7 @@ void main() {
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx)
             farthest = max(farthest, texelFetch(u_depth, clamp(qi + ivec2(dx, dy), ivec2(0), size - 1), 0).r);
+    if (f_in.on_surface > 0.0 && texelFetch(u_depth, ivec2(p), 0).r == 1.0) discard;
     if (farthest < 1.0) {
         float line_distance = camera_distance(mix(f_in.depth.x, f_in.depth.y, t));
         if (line_distance > camera_distance(farthest) + f_in.tolerance) discard;

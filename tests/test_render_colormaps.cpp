@@ -1,0 +1,137 @@
+// Colour maps show the colours they should at points of known curvature, and
+// the colour bar shows the map's ends.
+#include <catch2/catch.hpp>
+
+#include "test_render_fixtures.h"
+
+#include "geometry/primitives.h"
+
+#include <algorithm>
+
+using namespace kappa;
+
+namespace {
+
+enum class Hue { White, Red, Blue, Green, Orange };
+
+const char* name(Hue h) {
+    switch (h) {
+        case Hue::White: return "white";
+        case Hue::Red: return "red";
+        case Hue::Blue: return "blue";
+        case Hue::Green: return "green";
+        case Hue::Orange: return "orange";
+    }
+    return "?";
+}
+
+// Which hue a pixel has, loosely: the dominant channel with a clear margin.
+bool has_hue(render::Rgba c, Hue h) {
+    const int r = c.r, g = c.g, b = c.b;
+    switch (h) {
+        case Hue::White: return std::min({r, g, b}) > 235;
+        case Hue::Red: return r > 150 && r > g + 50 && r > b + 50;
+        case Hue::Blue: return b > 150 && b > r + 50 && b > g + 40;
+        case Hue::Green: return g > 120 && g > r + 60 && g > b + 60;
+        case Hue::Orange: return r > 150 && r > b + 60 && g > b + 20 && g < r;
+    }
+    return false;
+}
+
+render::RenderSettings map_only(render::ColorMap map) {
+    auto s = test::lines_only({false, false, false});
+    s.colormap = map;
+    return s;
+}
+
+Mesh inverted(Mesh m) {
+    for (auto& f : m.faces) std::swap(f.y, f.z);
+    return m;
+}
+
+// Exact fields of the inside of a sphere: normals inward, k1 = k2 = -1/R.
+SurfaceFields inside_sphere_fields(const Mesh& mesh, float R) {
+    SurfaceFields f = test::sphere_fields(mesh, R);
+    for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+        f.normals[i] = -f.normals[i];
+        f.k1[i] = f.k2[i] = -1.0f / R;
+        std::swap(f.d1[i], f.d2[i]);  // keeps d1 x d2 = n
+    }
+    return f;
+}
+
+void check_pixel(const render::Image& image, glm::vec2 p, Hue hue, const std::string& what) {
+    const auto c = image.at(int(p.x), int(p.y));
+    INFO(what << ": pixel (" << int(p.x) << ", " << int(p.y) << ") is rgb(" << int(c.r) << ", " << int(c.g) << ", "
+              << int(c.b) << "), expected " << name(hue));
+    CHECK(has_hue(c, hue));
+}
+
+}  // namespace
+
+TEST_CASE("colour maps on a sphere and its inside", "[render][colormap]") {
+    const Mesh sphere = make_icosphere(1.0f, 3);
+    const auto camera = render::Camera::look_at({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f);
+    const SurfaceFields outside = test::sphere_fields(sphere, 1.0f);
+    const Mesh hollow = inverted(sphere);
+    const SurfaceFields inside = inside_sphere_fields(hollow, 1.0f);
+    const glm::vec2 center(128.5f, 128.5f);
+    struct Case {
+        render::ColorMap map;
+        Hue convex, concave;
+    };
+    // Signed maps: positive red, negative blue; the Gaussian curvature is
+    // positive on both sides; the principal map: blue convex, red concave;
+    // |C| = 0 is white.
+    for (const Case& c : {Case{render::ColorMap::K1, Hue::Red, Hue::Blue}, Case{render::ColorMap::K2, Hue::Red, Hue::Blue},
+                          Case{render::ColorMap::Mean, Hue::Red, Hue::Blue},
+                          Case{render::ColorMap::Gaussian, Hue::Red, Hue::Red},
+                          Case{render::ColorMap::Principal, Hue::Blue, Hue::Red},
+                          Case{render::ColorMap::DCurv, Hue::White, Hue::White}}) {
+        const std::string map = render::to_string(c.map);
+        check_pixel(test::render(sphere, outside, 1.0f, camera, map_only(c.map)), center, c.convex, map + " outside");
+        // Seen from inside: the camera within the hollow sphere.
+        const auto inner_camera = render::Camera::look_at({0, 0, 0.2f}, {0, 0, -1}, {0, 1, 0}, 35.0f);
+        check_pixel(test::render(hollow, inside, 1.0f, inner_camera, map_only(c.map)), center, c.concave,
+                    map + " inside");
+    }
+}
+
+TEST_CASE("colour maps on a torus", "[render][colormap]") {
+    const Mesh torus = make_torus(1.0f, 0.4f, 120, 48);
+    const SurfaceFields fields = test::torus_fields(torus, 1.0f, 0.4f);
+    const auto camera = render::Camera::look_at({0, -2.8f, 1.6f}, {0, 0, 0}, {0, 0, 1}, 40.0f);
+    const render::BoundingSphere bounds = render::bounding_sphere(torus);
+    const auto at = [&](glm::vec3 p) { return test::project(camera, bounds, p, 256, 256); };
+    const glm::vec3 outer_equator(0, -1.4f, 0), inner_wall(0, 0.6f, 0), tube_top(-1, 0, 0.4f);
+
+    const auto gauss = test::render(torus, fields, 0.4f, camera, map_only(render::ColorMap::Gaussian));
+    check_pixel(gauss, at(outer_equator), Hue::Red, "Gaussian, outer equator (K > 0)");
+    check_pixel(gauss, at(inner_wall), Hue::Blue, "Gaussian, inner wall (K < 0)");
+
+    const auto principal = test::render(torus, fields, 0.4f, camera, map_only(render::ColorMap::Principal));
+    test::maybe_save(principal, "torus_principal");
+    check_pixel(principal, at(outer_equator), Hue::Blue, "principal, outer equator (convex)");
+    check_pixel(principal, at(inner_wall), Hue::Green, "principal, inner wall (saddle)");
+
+    const auto dcurv = test::render(torus, fields, 0.4f, camera, map_only(render::ColorMap::DCurv));
+    test::maybe_save(dcurv, "torus_dcurv");
+    check_pixel(dcurv, at(outer_equator), Hue::White, "|C|, outer equator (|C| = 0)");
+    check_pixel(dcurv, at(tube_top), Hue::Orange, "|C|, top of the tube (|C| = 0.6 of its range)");
+
+    SECTION("the colour bar shows both ends of the map") {
+        auto s = map_only(render::ColorMap::K2);
+        s.colorbar = true;
+        const auto image = test::render(torus, fields, 0.4f, camera, s);
+        test::maybe_save(image, "torus_colorbar");
+        // The bar: right edge, half the height, centred vertically.
+        int left = image.width, right = 0;
+        for (int x = 0; x < image.width; ++x)
+            if (has_hue(image.at(x, 128 - 40), Hue::Red)) left = std::min(left, x), right = std::max(right, x);
+        REQUIRE(left < right);
+        CHECK(left > image.width * 3 / 4);  // only the bar, at the right
+        const int x = (left + right) / 2;
+        check_pixel(image, {x, 128 - 60}, Hue::Red, "top of the bar (high values)");
+        check_pixel(image, {x, 128 + 60}, Hue::Blue, "bottom of the bar (low values)");
+    }
+}
