@@ -1,0 +1,112 @@
+// `kappa render` end to end: the real executable, real files.
+#include <catch2/catch.hpp>
+
+#include "test_render_fixtures.h"
+#include "test_support.h"
+
+#include "render/camera.h"
+#include "render/png_writer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+using namespace kappa;
+
+namespace {
+
+std::string kappa_render(const std::string& args) { return std::string(KAPPA_EXE) + " render " + args; }
+
+}  // namespace
+
+TEST_CASE("kappa render writes a PNG of the requested size and says what it did", "[render][cli]") {
+    const std::string dir = test::temp_dir(), out = dir + "/blob.png";
+    const auto r = test::run_command(kappa_render("-o " + out + " --size 160x120 --shading none --lines contours"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("wrote " + out) != std::string::npos);
+    CHECK(r.output.find("render") != std::string::npos);  // timings
+    const render::Image image = render::read_png(out);
+    CHECK(image.width == 160);
+    CHECK(image.height == 120);
+    CHECK(test::count_ink(image) > 100);          // the contour of the built-in model
+    CHECK(image.at(0, 0).r == 255);               // white paper around it
+    CHECK(image.at(0, 0).a == 255);
+}
+
+TEST_CASE("kappa render: transparent background", "[render][cli]") {
+    const std::string dir = test::temp_dir(), out = dir + "/t.png";
+    const auto r = test::run_command(kappa_render("-o " + out + " --size 96x96 --background transparent -q"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const render::Image image = render::read_png(out);
+    CHECK(image.at(0, 0).a == 0);
+    CHECK(image.at(48, 48).a == 255);
+}
+
+TEST_CASE("kappa render: --turntable writes numbered views that differ", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    const auto r = test::run_command(kappa_render("-o " + dir + "/turn.png --size 64x64 --turntable 3 -q"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const auto a = render::read_png(dir + "/turn-000.png"), b = render::read_png(dir + "/turn-001.png"),
+               c = render::read_png(dir + "/turn-002.png");
+    CHECK(a.pixels != b.pixels);
+    CHECK(b.pixels != c.pixels);
+    CHECK_FALSE(std::filesystem::exists(dir + "/turn.png"));
+}
+
+TEST_CASE("kappa render: a .xf viewpoint gives the same image as the equivalent --eye camera", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.5f, -2.6f, 1.85f), glm::vec3(0), glm::vec3(0, 0, 1));
+    render::write_xf(dir + "/view.xf", view);
+    const glm::mat4 back = render::read_xf(dir + "/view.xf");
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) REQUIRE(back[c][r] == Approx(view[c][r]).margin(1e-6));
+    const std::string common = " --size 128x96 --fov 27.5 -q";
+    const auto a = test::run_command(kappa_render("-o " + dir + "/a.png --xf " + dir + "/view.xf" + common));
+    const auto b = test::run_command(
+        kappa_render("-o " + dir + "/b.png --eye 0.5,-2.6,1.85 --target 0,0,0 --up 0,0,1" + common));
+    INFO(a.output << b.output);
+    REQUIRE(a.exit_code == 0);
+    REQUIRE(b.exit_code == 0);
+    const auto ia = render::read_png(dir + "/a.png"), ib = render::read_png(dir + "/b.png");
+    size_t differ = 0;
+    for (size_t i = 0; i < ia.pixels.size(); ++i) differ += std::abs(int(ia.pixels[i]) - int(ib.pixels[i])) > 8;
+    CHECK(differ < ia.pixels.size() / 1000);
+}
+
+TEST_CASE("kappa render: errors are one clear line", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    SECTION("missing mesh file: exit 1, names the file") {
+        const auto r = test::run_command(kappa_render(dir + "/nope.ply -o " + dir + "/x.png"));
+        CHECK(r.exit_code == 1);
+        CHECK(r.output.find("nope.ply") != std::string::npos);
+        CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+    }
+    SECTION("bad option values: exit 2") {
+        for (const char* args : {"--lines contours,wiggles", "--shading glossy", "--colormap rainbow", "--size 12",
+                                 "--background '#12345'", "--fade maybe", "--hatching diagonal"}) {
+            const auto r = test::run_command(kappa_render("-o " + dir + "/x.png " + args));
+            INFO(args << ": " << r.output);
+            CHECK(r.exit_code == 2);
+            CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+        }
+    }
+    SECTION("missing output") {
+        CHECK(test::run_command(kappa_render("")).exit_code == 2);
+    }
+    SECTION("unwritable output: exit 1") {
+        const auto r = test::run_command(kappa_render("-o " + dir + "/no/such/dir/x.png --size 32x32"));
+        CHECK(r.exit_code == 1);
+        CHECK(r.output.find("x.png") != std::string::npos);
+    }
+    SECTION("a bad .xf file: exit 1, names the file") {
+        test::write_file(dir + "/bad.xf", "1 0 0\n0 1 zero\n");
+        const auto r = test::run_command(kappa_render("-o " + dir + "/x.png --xf " + dir + "/bad.xf"));
+        CHECK(r.exit_code == 1);
+        CHECK(r.output.find("bad.xf") != std::string::npos);
+    }
+}
