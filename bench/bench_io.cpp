@@ -83,11 +83,14 @@ int main(int argc, char** argv) {
         kappa::SurfaceFields fields = fake_fields(big);
         std::string out = (std::filesystem::temp_directory_path() / "kappa-bench-io").string();
         time_it("write_csv bunny-1M", runs, [&] { kappa::write_csv(out + ".csv", big, fields); });
-        time_it("write_ply binary bunny-1M", runs, [&] { kappa::write_ply(out + ".ply", big, fields, true); });
+        time_it("write_ply binary bunny-1M", runs,
+                [&] { kappa::write_ply(out + ".ply", big, fields, true); });
         time_it("load written binary PLY (19 props)", runs, [&] { big = kappa::load_mesh(out + ".ply"); });
         int ascii_runs = std::max(1, runs / 3);
-        time_it("write_ply ascii bunny-1M", ascii_runs, [&] { kappa::write_ply(out + ".ply", big, fields, false); });
-        time_it("load written ascii PLY (19 props)", ascii_runs, [&] { big = kappa::load_mesh(out + ".ply"); });
+        time_it("write_ply ascii bunny-1M", ascii_runs,
+                [&] { kappa::write_ply(out + ".ply", big, fields, false); });
+        time_it("load written ascii PLY (19 props)", ascii_runs,
+                [&] { big = kappa::load_mesh(out + ".ply"); });
         std::filesystem::remove(out + ".csv");
         std::filesystem::remove(out + ".ply");
     } catch (const std::exception& e) {

@@ -2,5 +2,6 @@
 #include "fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    return kappa::fuzz::check_reader(data, size, [](const char* d, size_t n) { return kappa::read_ply(d, n, "fuzz.ply"); });
+    return kappa::fuzz::check_reader(
+        data, size, [](const char* d, size_t n) { return kappa::read_ply(d, n, "fuzz.ply"); });
 }

@@ -3,10 +3,10 @@
 #include "test_io_support.h"
 #include "test_support.h"
 
-#include <cmath>
-#include <limits>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cmath>
+#include <limits>
 
 using namespace kappa;
 using kappa::test::Bytes;
@@ -73,8 +73,8 @@ TEST_CASE("load errors: content that is not a mesh", "[io][errors]") {
 }
 
 TEST_CASE("load errors: a file with nothing in it", "[io][errors]") {
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 0\n" + kXyz + "end_header\n"), "test.ply",
-                       "no vertices");
+    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 0\n" + kXyz + "end_header\n"),
+                       "test.ply", "no vertices");
     REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nend_header\n"), "test.ply", "no vertices");
     REQUIRE_LOAD_ERROR(off_from("OFF\n0 0 0\n"), "test.off", "no vertices");
     REQUIRE_LOAD_ERROR(off_from("# only a comment\n"), "test.off", "only comments");
@@ -108,21 +108,25 @@ TEST_CASE("load errors: the bunny with a bad index names the face and the counts
     text.replace(space + 1, text.find(' ', space + 1) - space - 1, "40000");
     std::string path = kappa::test::temp_dir() + "/bunny.ply";
     kappa::test::write_file(path, text);
-    REQUIRE_LOAD_ERROR(load_mesh(path), path, "face 12 refers to vertex 40000 but the file has 35947 vertices");
+    REQUIRE_LOAD_ERROR(load_mesh(path), path,
+                       "face 12 refers to vertex 40000 but the file has 35947 vertices");
 }
 
 TEST_CASE("load errors: NaN and infinite coordinates", "[io][errors]") {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     REQUIRE_LOAD_ERROR(ply_from(binary_ply(2, nan)), "test.ply", "vertex 0 has a non-finite coordinate");
     REQUIRE_LOAD_ERROR(ply_from(binary_ply(2, -inf)), "test.ply", "non-finite");
-    REQUIRE_LOAD_ERROR(ply_from(ascii_ply("0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n")), "test.ply", "vertex 1 has a non-finite");
+    REQUIRE_LOAD_ERROR(ply_from(ascii_ply("0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n")), "test.ply",
+                       "vertex 1 has a non-finite");
     REQUIRE_LOAD_ERROR(ply_from(ascii_ply("0 0 0\n1 0 0\n0 1 inf\n3 0 1 2\n")), "test.ply", "vertex 2");
     // A double beyond the float range.
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
-                                "property double z\nend_header\n1e300 0 0\n"),
-                       "test.ply", "non-finite");
+    REQUIRE_LOAD_ERROR(
+        ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
+                 "property double z\nend_header\n1e300 0 0\n"),
+        "test.ply", "non-finite");
     REQUIRE_LOAD_ERROR(off_from("OFF\n3 1 0\n0 0 0\n1 0 0\n0 NaN 0\n3 0 1 2\n"), "test.off", "vertex 2");
-    REQUIRE_LOAD_ERROR(obj_from("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n"), "test.obj", "bad coordinate 'nan'");
+    REQUIRE_LOAD_ERROR(obj_from("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n"), "test.obj",
+                       "bad coordinate 'nan'");
     REQUIRE_LOAD_ERROR(obj_from("v 0 0 0\nv 1 0 1e39\nv 0 1 0\nf 1 2 3\n"), "test.obj", "vertex 1");
     REQUIRE_LOAD_ERROR(stl_from("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex inf 0 0\n"
                                 "vertex 0 1 0\nendloop\nendfacet\nendsolid\n"),
@@ -145,7 +149,21 @@ TEST_CASE("load errors: truncated files and wrong counts", "[io][errors]") {
     }
     SECTION("binary PLY, generic path (big-endian)") {
         std::string file = "ply\nformat binary_big_endian 1.0\nelement vertex 3\n" + kXyz + kFaceList +
-                           "end_header\n" + Bytes().be(1.0f).be(2.0f).be(3.0f).be(4.0f).be(5.0f).be(6.0f).be(7.0f).be(8.0f).be(9.0f).be(uint8_t(3)).be(0).be(1).str();
+                           "end_header\n" +
+                           Bytes()
+                               .be(1.0f)
+                               .be(2.0f)
+                               .be(3.0f)
+                               .be(4.0f)
+                               .be(5.0f)
+                               .be(6.0f)
+                               .be(7.0f)
+                               .be(8.0f)
+                               .be(9.0f)
+                               .be(uint8_t(3))
+                               .be(0)
+                               .be(1)
+                               .str();
         REQUIRE_LOAD_ERROR(ply_from(file), "test.ply", "unexpected end of file in element 'face'");
     }
     SECTION("ascii PLY with fewer vertices than declared") {
@@ -153,25 +171,29 @@ TEST_CASE("load errors: truncated files and wrong counts", "[io][errors]") {
         REQUIRE_LOAD_ERROR(ply_from(ascii_ply("0 0 0\n1 0 0\n0 1 0\n3 0 1\n")), "test.ply", "end of file");
     }
     SECTION("ascii PLY with a bad number") {
-        REQUIRE_LOAD_ERROR(ply_from(ascii_ply("0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n")), "test.ply", "bad number 'one' on line 12");
+        REQUIRE_LOAD_ERROR(ply_from(ascii_ply("0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n")), "test.ply",
+                           "bad number 'one' on line 12");
     }
     SECTION("PLY header without end_header") {
         REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 3\n"), "test.ply", "end_header");
     }
     SECTION("OFF with fewer faces than declared") {
         REQUIRE_LOAD_ERROR(off_from("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "test.off", "end of file");
-        REQUIRE_LOAD_ERROR(off_from("OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n"), "test.off", "line 4 ends too early");
+        REQUIRE_LOAD_ERROR(off_from("OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n"), "test.off",
+                           "line 4 ends too early");
     }
     SECTION("binary STL whose size does not match its triangle count") {
         std::string stl = Bytes().text(std::string(80, ' ')).le(uint32_t(3)).str() + std::string(100, '\0');
         REQUIRE_LOAD_ERROR(stl_from(stl), "test.stl", "declares 3 triangles");
         // Also when the binary header starts with "solid".
-        std::string solid = Bytes().text("solid" + std::string(75, ' ')).le(uint32_t(3)).str() + std::string(100, '\0');
-        REQUIRE_LOAD_ERROR(stl_from(solid), "test.stl", "declares 3 triangles (234 bytes) but the file has 184 bytes");
+        std::string solid =
+            Bytes().text("solid" + std::string(75, ' ')).le(uint32_t(3)).str() + std::string(100, '\0');
+        REQUIRE_LOAD_ERROR(stl_from(solid), "test.stl",
+                           "declares 3 triangles (234 bytes) but the file has 184 bytes");
     }
     SECTION("ascii STL cut inside a facet, and a facet with 4 corners") {
-        REQUIRE_LOAD_ERROR(stl_from("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0"), "test.stl",
-                           "end of file inside facet 0");
+        REQUIRE_LOAD_ERROR(stl_from("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0"),
+                           "test.stl", "end of file inside facet 0");
         REQUIRE_LOAD_ERROR(stl_from("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
                                     "vertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n"),
                            "test.stl", "more than 3 vertices");
@@ -179,15 +201,16 @@ TEST_CASE("load errors: truncated files and wrong counts", "[io][errors]") {
 }
 
 TEST_CASE("load errors: absurd counts fail fast without allocating", "[io][errors]") {
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat binary_little_endian 1.0\nelement vertex 999999999999999\n" + kXyz +
-                                "end_header\n" + std::string(24, '\0')),
+    REQUIRE_LOAD_ERROR(ply_from("ply\nformat binary_little_endian 1.0\nelement vertex 999999999999999\n" +
+                                kXyz + "end_header\n" + std::string(24, '\0')),
                        "test.ply", "header declares 999999999999999 'vertex' elements");
     REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 3\n" + kXyz +
                                 "element face 18446744073709551615\nproperty list uchar int vertex_indices\n"
                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
                        "test.ply", "'face' elements");
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 18446744073709551616\n" + kXyz + "end_header\n"),
-                       "test.ply", "element count");
+    REQUIRE_LOAD_ERROR(
+        ply_from("ply\nformat ascii 1.0\nelement vertex 18446744073709551616\n" + kXyz + "end_header\n"),
+        "test.ply", "element count");
     // A list length of 2^31 - 1 in a 50-byte body.
     Bytes b;
     b.text("ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + kXyz +
@@ -200,18 +223,24 @@ TEST_CASE("load errors: absurd counts fail fast without allocating", "[io][error
 }
 
 TEST_CASE("load errors: malformed PLY headers", "[io][errors]") {
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nproperty float x\nend_header\n"), "test.ply", "before any element");
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n"), "test.ply",
-                       "unknown property type");
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty list float int x\nend_header\n"),
-                       "test.ply", "integer type");
-    REQUIRE_LOAD_ERROR(ply_from("ply\nelement vertex 1\n" + kXyz + "end_header\n0 0 0\n"), "test.ply", "no format");
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat binary_middle_endian 1.0\nend_header\n"), "test.ply", "unknown format");
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                                "end_header\n0 0\n"),
-                       "test.ply", "no 'z' property");
+    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nproperty float x\nend_header\n"), "test.ply",
+                       "before any element");
+    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n"),
+                       "test.ply", "unknown property type");
+    REQUIRE_LOAD_ERROR(
+        ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty list float int x\nend_header\n"),
+        "test.ply", "integer type");
+    REQUIRE_LOAD_ERROR(ply_from("ply\nelement vertex 1\n" + kXyz + "end_header\n0 0 0\n"), "test.ply",
+                       "no format");
+    REQUIRE_LOAD_ERROR(ply_from("ply\nformat binary_middle_endian 1.0\nend_header\n"), "test.ply",
+                       "unknown format");
+    REQUIRE_LOAD_ERROR(
+        ply_from("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                 "end_header\n0 0\n"),
+        "test.ply", "no 'z' property");
     REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nelement vertex 1\n" + kXyz +
                                 "element face 1\nproperty list uchar int corners\nend_header\n0 0 0\n0\n"),
                        "test.ply", "no 'vertex_indices'");
-    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nbogus line\nend_header\n"), "test.ply", "header line 3 'bogus line'");
+    REQUIRE_LOAD_ERROR(ply_from("ply\nformat ascii 1.0\nbogus line\nend_header\n"), "test.ply",
+                       "header line 3 'bogus line'");
 }

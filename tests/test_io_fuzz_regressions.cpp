@@ -38,7 +38,8 @@ TEST_CASE("fuzz regression: OBJ 'vw' statement with an infinite joint id", "[io]
     // behaviour); statements other than v and f no longer reach it.
     const std::string input =
         "# seed\nm qlib a.mtl\no thing\nv 010 0\n3\nf 5/1 4/2 1/3\nl 1 2\np 3\n"
-        "vw 0 0 ///1 2/2/1 3/3/1 1e39\x0b" + std::string(3, '\0') + "0*5\n";
+        "vw 0 0 ///1 2/2/1 3/3/1 1e39\x0b" +
+        std::string(3, '\0') + "0*5\n";
     survives([&] { return obj_from(input); });
     Mesh m = obj_from("v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 1e39 0.5\nf 1 2 3\n");
     CHECK(m.face_count() == 1);

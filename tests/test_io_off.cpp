@@ -31,9 +31,12 @@ TEST_CASE("OFF: COFF, NOFF, CNOFF, STOFF extra per-vertex values and face colour
         const char* keyword;
         const char* extra;  // appended to each vertex line
     };
-    const Variant variants[] = {{"COFF", " 255 0 0 255"},           {"COFF", " 0.5 0.5 0.5"},
-                                {"NOFF", " 0 0 1"},                  {"CNOFF", " 0 0 1 1 0 0 1"},
-                                {"STCNOFF", " 0 0 1 0.2 0.3 0.4 1 0.5 0.5"}, {"STOFF", " 0.5 0.25"}};
+    const Variant variants[] = {{"COFF", " 255 0 0 255"},
+                                {"COFF", " 0.5 0.5 0.5"},
+                                {"NOFF", " 0 0 1"},
+                                {"CNOFF", " 0 0 1 1 0 0 1"},
+                                {"STCNOFF", " 0 0 1 0.2 0.3 0.4 1 0.5 0.5"},
+                                {"STOFF", " 0.5 0.25"}};
     for (const Variant& v : variants) {
         INFO(v.keyword << v.extra);
         std::string text = std::string(v.keyword) + "\n5 5 8\n";

@@ -13,7 +13,9 @@ namespace {
 enum class Encoding { Ascii, Little, Big };
 
 const char* format_name(Encoding e) {
-    return e == Encoding::Ascii ? "ascii" : e == Encoding::Little ? "binary_little_endian" : "binary_big_endian";
+    return e == Encoding::Ascii    ? "ascii"
+           : e == Encoding::Little ? "binary_little_endian"
+                                   : "binary_big_endian";
 }
 
 // Writes values in one encoding; ASCII values are separated by spaces and
@@ -81,7 +83,8 @@ TEST_CASE("PLY: comments, obj_info, CRLF line endings, blank lines, vertex_index
     CHECK(m.positions[1] == glm::vec3(1, 0, 0));
 }
 
-TEST_CASE("PLY: every property type and alias, extra lists, unknown elements, in every encoding", "[io][ply]") {
+TEST_CASE("PLY: every property type and alias, extra lists, unknown elements, in every encoding",
+          "[io][ply]") {
     Encoding enc = GENERATE(Encoding::Ascii, Encoding::Little, Encoding::Big);
     INFO(format_name(enc));
     // x, y, z of three different float types among scalars of every type and
@@ -101,7 +104,8 @@ TEST_CASE("PLY: every property type and alias, extra lists, unknown elements, in
     Body body(enc);
     const double z_values[4] = {0.1, -2.5e-3, 1e10, 0.0};
     for (int v = 0; v < 4; ++v) {
-        body(int8_t(-7))(uint8_t(200))(int16_t(-30000))(uint16_t(60000))(int32_t(-2000000000))(uint32_t(4000000000u));
+        body(int8_t(-7))(uint8_t(200))(int16_t(-30000))(uint16_t(60000))(int32_t(-2000000000))(
+            uint32_t(4000000000u));
         body(float(kSquare[v].x));
         body(uint8_t(3))(1.5f)(2.5f)(3.5f);  // normals_list
         body(1e300)(int8_t(-1))(uint8_t(1))(int16_t(-1))(uint16_t(1));
@@ -135,8 +139,9 @@ TEST_CASE("PLY: every property type and alias, extra lists, unknown elements, in
 
 TEST_CASE("PLY: big-endian float vertices and uchar/int faces", "[io][ply]") {
     Bytes b;
-    b.text(header(Encoding::Big, "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                                 "element face 1\nproperty list uchar int vertex_indices\n"));
+    b.text(header(Encoding::Big,
+                  "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                  "element face 1\nproperty list uchar int vertex_indices\n"));
     b.be(1.25f).be(-2.0f).be(3.0e-5f).be(4.0f).be(5.0f).be(6.0f).be(7.0f).be(8.0f).be(9.0f);
     b.be(uint8_t(3)).be(int32_t(2)).be(int32_t(1)).be(int32_t(0));
     Mesh m = ply_from(b.str());
@@ -152,8 +157,9 @@ TEST_CASE("PLY: double coordinates (binary and ascii)", "[io][ply]") {
     Body body(enc);
     body(0.1)(0.2)(0.3).end_item()(1e-3)(-123456.789)(2.0).end_item()(0.0)(1.0)(-1.0).end_item();
     body(uint8_t(3))(int32_t(0))(int32_t(1))(int32_t(2)).end_item();
-    Mesh m = ply_from(header(enc, "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
-                                  "element face 1\nproperty list uchar int vertex_indices\n") +
+    Mesh m = ply_from(header(enc,
+                             "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\n") +
                       body.str());
     CHECK(m.positions[0] == glm::vec3(float(0.1), float(0.2), float(0.3)));
     CHECK(m.positions[1] == glm::vec3(float(1e-3), float(-123456.789), 2.0f));
@@ -164,12 +170,19 @@ TEST_CASE("PLY: fast-path layout with extra fixed-size properties", "[io][ply]")
     // vertex: x y z + float confidence (like bunny-1M); face: int flags
     // before and after the index list (fast face path with prefix/suffix).
     Bytes b;
-    b.text(header(Encoding::Little, "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-                                    "property float confidence\nelement face 3\nproperty int before\n"
-                                    "property list uchar int vertex_indices\nproperty uint after\n"));
+    b.text(header(Encoding::Little,
+                  "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                  "property float confidence\nelement face 3\nproperty int before\n"
+                  "property list uchar int vertex_indices\nproperty uint after\n"));
     for (const glm::vec3& p : kSquare) b.le(p.x).le(p.y).le(p.z).le(0.5f);
     b.le(int32_t(-1)).le(uint8_t(3)).le(int32_t(0)).le(int32_t(1)).le(int32_t(2)).le(uint32_t(7));
-    b.le(int32_t(-1)).le(uint8_t(4)).le(int32_t(0)).le(int32_t(1)).le(int32_t(2)).le(int32_t(3)).le(uint32_t(7));
+    b.le(int32_t(-1))
+        .le(uint8_t(4))
+        .le(int32_t(0))
+        .le(int32_t(1))
+        .le(int32_t(2))
+        .le(int32_t(3))
+        .le(uint32_t(7));
     b.le(int32_t(-1)).le(uint8_t(2)).le(int32_t(0)).le(int32_t(1)).le(uint32_t(7));  // an edge: no triangle
     Mesh m = ply_from(b.str());
     REQUIRE(m.vertex_count() == 4);
@@ -198,8 +211,9 @@ TEST_CASE("PLY: tristrips with restarts, alternating winding and stitching trian
         body(int32_t(strips.size()));
         for (int32_t v : strips) body(v);
         body.end_item();
-        return ply_from(header(enc, "element vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
-                                    "element tristrips 1\nproperty list int int vertex_indices\n") +
+        return ply_from(header(enc,
+                               "element vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+                               "element tristrips 1\nproperty list int int vertex_indices\n") +
                         body.str());
     };
     // Triangle k of a strip is (s[k], s[k+1], s[k+2]), first two swapped for
@@ -213,8 +227,9 @@ TEST_CASE("PLY: tristrips with restarts, alternating winding and stitching trian
 
 TEST_CASE("PLY: unsigned strip indices restart at their all-ones value", "[io][ply]") {
     Bytes b;
-    b.text(header(Encoding::Little, "element vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
-                                    "element tristrips 1\nproperty list uchar uint vertex_indices\n"));
+    b.text(header(Encoding::Little,
+                  "element vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+                  "element tristrips 1\nproperty list uchar uint vertex_indices\n"));
     for (int i = 0; i < 6; ++i) b.le(float(i)).le(float(i % 2)).le(0.0f);
     b.le(uint8_t(7)).le(0u).le(1u).le(2u).le(0xffffffffu).le(3u).le(4u).le(5u);
     Mesh m = ply_from(b.str());

@@ -56,8 +56,10 @@ TEST_CASE("STL: ascii file, any keyword case, several solids", "[io][stl]") {
 
 TEST_CASE("STL: welding is exact (-0 equals +0, nearby points stay apart)", "[io][stl]") {
     std::string text =
-        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
-        "facet normal 0 0 1\nouter loop\nvertex -0 0 -0\nvertex 1.0000001 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 "
+        "0\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex -0 0 -0\nvertex 1.0000001 0 0\nvertex 0 1 "
+        "0\nendloop\nendfacet\n"
         "endsolid s\n";
     Mesh m = stl_from(text);
     REQUIRE(m.vertex_count() == 4);

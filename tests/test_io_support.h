@@ -21,9 +21,13 @@ public:
         return *this;
     }
     template <typename T>
-    Bytes& le(T value) { return put(value, false); }
+    Bytes& le(T value) {
+        return put(value, false);
+    }
     template <typename T>
-    Bytes& be(T value) { return put(value, true); }
+    Bytes& be(T value) {
+        return put(value, true);
+    }
     const std::string& str() const { return data_; }
 
 private:
@@ -52,13 +56,13 @@ inline std::string load_error(const std::function<void()>& load) {
 }
 
 // The message is one line "NAME: problem" mentioning `fragment`.
-#define REQUIRE_LOAD_ERROR(expression, name, fragment)                              \
-    do {                                                                            \
+#define REQUIRE_LOAD_ERROR(expression, name, fragment)                                 \
+    do {                                                                               \
         std::string message_ = ::kappa::test::load_error([&] { (void)(expression); }); \
-        INFO("message: " << message_);                                              \
-        CHECK(message_.rfind(std::string(name) + ": ", 0) == 0);                    \
-        CHECK(message_.find('\n') == std::string::npos);                            \
-        CHECK(message_.find(fragment) != std::string::npos);                        \
+        INFO("message: " << message_);                                                 \
+        CHECK(message_.rfind(std::string(name) + ": ", 0) == 0);                       \
+        CHECK(message_.find('\n') == std::string::npos);                               \
+        CHECK(message_.find(fragment) != std::string::npos);                           \
     } while (0)
 
 // Reading helpers on in-memory text.

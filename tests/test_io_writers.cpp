@@ -1,8 +1,8 @@
 // PLY and CSV writers: round trips, the exact CSV layout of conventions.md,
 // and write errors.
+#include "geometry/parallel.h"
 #include "test_io_support.h"
 #include "test_support.h"
-#include "geometry/parallel.h"
 
 #include <cmath>
 #include <cstdio>
@@ -25,8 +25,8 @@ Sample make_sample(size_t n) {
     uint32_t state = 12345;
     auto next = [&] {
         state = state * 1664525u + 1013904223u;
-        float unit = float(state >> 8) / float(1 << 24);          // [0, 1)
-        float scale = std::ldexp(1.0f, int(state % 61) - 30);     // 2^-30 .. 2^30
+        float unit = float(state >> 8) / float(1 << 24);       // [0, 1)
+        float scale = std::ldexp(1.0f, int(state % 61) - 30);  // 2^-30 .. 2^30
         return (unit - 0.5f) * scale;
     };
     for (size_t i = 0; i < n; ++i) s.mesh.positions.emplace_back(next(), next(), next());
@@ -51,7 +51,8 @@ std::vector<float> row_of(const Sample& s, size_t i) {
     const SurfaceFields& f = s.fields;
     const glm::vec3 &p = s.mesh.positions[i], &n = f.normals[i], &d1 = f.d1[i], &d2 = f.d2[i];
     const glm::vec4& c = f.dcurv[i];
-    return {p.x, p.y, p.z, n.x, n.y, n.z, f.k1[i], f.k2[i], d1.x, d1.y, d1.z, d2.x, d2.y, d2.z, c[0], c[1], c[2], c[3]};
+    return {p.x,  p.y,  p.z,  n.x,  n.y,  n.z,  f.k1[i], f.k2[i], d1.x,
+            d1.y, d1.z, d2.x, d2.y, d2.z, c[0], c[1],    c[2],    c[3]};
 }
 
 // Reads a PLY written by write_ply back with a minimal independent parser
@@ -93,11 +94,13 @@ TEST_CASE("write_ply: binary and ascii round trips keep every number", "[io][wri
     write_ply(path, s.mesh, s.fields, binary);
 
     std::string file = kappa::test::read_file(path);
-    std::string expected_header = std::string("ply\nformat ") + (binary ? "binary_little_endian" : "ascii") + " 1.0\n";
+    std::string expected_header =
+        std::string("ply\nformat ") + (binary ? "binary_little_endian" : "ascii") + " 1.0\n";
     CHECK(file.rfind(expected_header, 0) == 0);
-    for (const char* prop : {"property float x\n", "property float nx\n", "property float k1\n", "property float d2z\n",
-                             "property float d\n", "property uchar flags\n",
-                             "property list uchar int vertex_indices\n", "element vertex 300\n", "element face 298\n"})
+    for (const char* prop :
+         {"property float x\n", "property float nx\n", "property float k1\n", "property float d2z\n",
+          "property float d\n", "property uchar flags\n", "property list uchar int vertex_indices\n",
+          "element vertex 300\n", "element face 298\n"})
         CHECK(file.find(prop) != std::string::npos);
 
     // Our reader gets the same mesh back...
@@ -114,7 +117,8 @@ TEST_CASE("write_ply: binary and ascii round trips keep every number", "[io][wri
     }
 }
 
-TEST_CASE("write_csv: header, one row per vertex in order, %.9g values that read back exactly", "[io][writers]") {
+TEST_CASE("write_csv: header, one row per vertex in order, %.9g values that read back exactly",
+          "[io][writers]") {
     Sample s = make_sample(10000);  // more than one formatting block
     std::string path = kappa::test::temp_dir() + "/out.csv";
     write_csv(path, s.mesh, s.fields);
@@ -158,10 +162,12 @@ TEST_CASE("write_csv: output is the same whatever the thread count", "[io][write
     CHECK(kappa::test::read_file(dir + "/one.csv") == kappa::test::read_file(dir + "/four.csv"));
 }
 
-TEST_CASE("writers: errors name the path (missing directory, disk full, mismatched fields)", "[io][writers]") {
+TEST_CASE("writers: errors name the path (missing directory, disk full, mismatched fields)",
+          "[io][writers]") {
     Sample s = make_sample(50);
     std::string bad = kappa::test::temp_dir() + "/no/such/dir/out.csv";
-    auto expect_write_error = [](const std::function<void()>& write, const std::string& path, const std::string& what) {
+    auto expect_write_error = [](const std::function<void()>& write, const std::string& path,
+                                 const std::string& what) {
         try {
             write();
             FAIL("expected a MeshWriteError");
@@ -177,7 +183,8 @@ TEST_CASE("writers: errors name the path (missing directory, disk full, mismatch
     expect_write_error([&] { write_ply(bad, s.mesh, s.fields); }, bad, "cannot open for writing");
     // /dev/full accepts the open and fails every write with ENOSPC.
     expect_write_error([&] { write_csv("/dev/full", s.mesh, s.fields); }, "/dev/full", "No space left");
-    expect_write_error([&] { write_ply("/dev/full", s.mesh, s.fields, false); }, "/dev/full", "No space left");
+    expect_write_error([&] { write_ply("/dev/full", s.mesh, s.fields, false); }, "/dev/full",
+                       "No space left");
 
     SurfaceFields short_fields = s.fields;
     short_fields.k2.pop_back();

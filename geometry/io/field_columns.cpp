@@ -4,8 +4,9 @@
 
 namespace kappa::io {
 
-const char* const kFieldColumnNames[kFieldColumnCount] = {
-    "x", "y", "z", "nx", "ny", "nz", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z", "a", "b", "c", "d"};
+const char* const kFieldColumnNames[kFieldColumnCount] = {"x",   "y",   "z",   "nx",  "ny",  "nz",
+                                                          "k1",  "k2",  "d1x", "d1y", "d1z", "d2x",
+                                                          "d2y", "d2z", "a",   "b",   "c",   "d"};
 
 void check_fields_match(const std::string& path, const Mesh& mesh, const SurfaceFields& f) {
     const size_t n = mesh.vertex_count();

@@ -22,8 +22,8 @@ void check_fields_match(const std::string& path, const Mesh& mesh, const Surface
 inline void field_row(const Mesh& mesh, const SurfaceFields& f, size_t i, float out[kFieldColumnCount]) {
     const glm::vec3 &p = mesh.positions[i], &n = f.normals[i], &d1 = f.d1[i], &d2 = f.d2[i];
     const glm::vec4& c = f.dcurv[i];
-    const float row[kFieldColumnCount] = {p.x,     p.y,  p.z,  n.x,  n.y,  n.z,  f.k1[i], f.k2[i], d1.x,
-                                          d1.y,    d1.z, d2.x, d2.y, d2.z, c[0], c[1],    c[2],    c[3]};
+    const float row[kFieldColumnCount] = {p.x,  p.y,  p.z,  n.x,  n.y,  n.z,  f.k1[i], f.k2[i], d1.x,
+                                          d1.y, d1.z, d2.x, d2.y, d2.z, c[0], c[1],    c[2],    c[3]};
     for (size_t k = 0; k < kFieldColumnCount; ++k) out[k] = row[k];
 }
 

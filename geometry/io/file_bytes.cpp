@@ -3,11 +3,11 @@
 #include "io_errors.h"
 #include "prefault.h"
 
-#include <cerrno>
-#include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cerrno>
+#include <cstring>
 
 namespace kappa::io {
 
@@ -15,7 +15,9 @@ namespace {
 // Closes the descriptor on every path out of read_file_bytes.
 struct FdGuard {
     int fd;
-    ~FdGuard() { if (fd >= 0) ::close(fd); }
+    ~FdGuard() {
+        if (fd >= 0) ::close(fd);
+    }
 };
 }  // namespace
 

@@ -10,8 +10,8 @@ namespace kappa::io {
 void fail_bad_index(const std::string& name, const char* what, uint64_t number, int64_t index,
                     size_t vertex_count) {
     fail_load(name, std::string(what) + " " + std::to_string(number) + " refers to vertex " +
-                        std::to_string(index) + " but the file has " +
-                        std::to_string(vertex_count) + " vertices");
+                        std::to_string(index) + " but the file has " + std::to_string(vertex_count) +
+                        " vertices");
 }
 
 void add_polygon(const std::string& name, const char* what, uint64_t number, const int64_t* indices,
@@ -23,9 +23,8 @@ void add_polygon(const std::string& name, const char* what, uint64_t number, con
         faces.emplace_back(uint32_t(indices[0]), uint32_t(indices[i]), uint32_t(indices[i + 1]));
 }
 
-void add_triangle_strips(const std::string& name, uint64_t number, const int64_t* indices,
-                         size_t count, int64_t restart, size_t vertex_count,
-                         std::vector<Face>& faces) {
+void add_triangle_strips(const std::string& name, uint64_t number, const int64_t* indices, size_t count,
+                         int64_t restart, size_t vertex_count, std::vector<Face>& faces) {
     size_t strip_start = 0;
     for (size_t i = 0; i < count; ++i) {
         int64_t v = indices[i];
@@ -51,8 +50,7 @@ void check_loaded_mesh(const std::string& name, const Mesh& mesh) {
         const glm::vec3& p = mesh.positions[i];
         if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
         std::ostringstream msg;
-        msg << "vertex " << i << " has a non-finite coordinate (" << p.x << ", " << p.y << ", "
-            << p.z << ")";
+        msg << "vertex " << i << " has a non-finite coordinate (" << p.x << ", " << p.y << ", " << p.z << ")";
         fail_load(name, msg.str());
     }
 }

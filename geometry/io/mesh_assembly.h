@@ -15,8 +15,8 @@ inline bool valid_index(int64_t index, size_t vertex_count) {
 }
 
 // Throws "NAME: WHAT NUMBER refers to vertex INDEX but the file has N vertices".
-[[noreturn]] void fail_bad_index(const std::string& name, const char* what, uint64_t number,
-                                 int64_t index, size_t vertex_count);
+[[noreturn]] void fail_bad_index(const std::string& name, const char* what, uint64_t number, int64_t index,
+                                 size_t vertex_count);
 
 // Checks every index of a polygon, then appends its fan triangulation
 // (v0, v[i], v[i+1]); polygons with fewer than 3 corners add nothing.
@@ -28,9 +28,8 @@ void add_polygon(const std::string& name, const char* what, uint64_t number, con
 // strip is (s[k], s[k+1], s[k+2]) with the first two swapped for odd k, so all
 // triangles keep the strip's orientation; triangles that repeat an index
 // (used to stitch strips together) are dropped.
-void add_triangle_strips(const std::string& name, uint64_t number, const int64_t* indices,
-                         size_t count, int64_t restart, size_t vertex_count,
-                         std::vector<Face>& faces);
+void add_triangle_strips(const std::string& name, uint64_t number, const int64_t* indices, size_t count,
+                         int64_t restart, size_t vertex_count, std::vector<Face>& faces);
 
 // Final checks of a loaded mesh: at least one vertex, finite coordinates.
 // Throws MeshLoadError naming the first bad vertex.

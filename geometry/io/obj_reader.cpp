@@ -78,7 +78,8 @@ std::vector<glm::vec3> read_positions(const char* data, size_t size, const std::
         for (int a = 0; a < 3; ++a) {
             std::string_view token = cursor.token();
             if (token.empty() || !parse_number(token, p[a]) || !std::isfinite(p[a]))
-                fail_load(name, "line " + std::to_string(line) + ": vertex " + std::to_string(positions.size()) +
+                fail_load(name, "line " + std::to_string(line) + ": vertex " +
+                                    std::to_string(positions.size()) +
                                     (token.empty() ? std::string(" has fewer than 3 coordinates")
                                                    : " has a bad coordinate " + quoted(token)));
         }
@@ -90,7 +91,8 @@ std::vector<glm::vec3> read_positions(const char* data, size_t size, const std::
 std::string first_line(const std::string& text) {
     size_t end = text.find('\n');
     std::string line = text.substr(0, end);
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '.')) line.pop_back();
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '.'))
+        line.pop_back();
     return line;
 }
 
@@ -116,8 +118,8 @@ Mesh read_obj(const char* data, size_t size, const std::string& name) {
     mesh.positions = read_positions(data, size, name);
     const size_t vertex_count = mesh.positions.size();
     if (attrib.vertices.size() != 3 * vertex_count)
-        fail_load(name, "OBJ parser found " + std::to_string(attrib.vertices.size() / 3) + " vertices, expected " +
-                            std::to_string(vertex_count));
+        fail_load(name, "OBJ parser found " + std::to_string(attrib.vertices.size() / 3) +
+                            " vertices, expected " + std::to_string(vertex_count));
 
     std::vector<int64_t> polygon;
     uint64_t face_number = 0;

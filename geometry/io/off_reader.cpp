@@ -42,12 +42,13 @@ public:
         if (t.empty() && in_line && !cursor_.at_end())
             fail_load(*name_, std::string("line ") + std::to_string(cursor_.line_number()) +
                                   " ends too early while reading " + what);
-        if (t.empty()) fail_load(*name_, std::string("unexpected end of file while reading ") + what +
-                                             " (the file is truncated or its counts are wrong)");
+        if (t.empty())
+            fail_load(*name_, std::string("unexpected end of file while reading ") + what +
+                                  " (the file is truncated or its counts are wrong)");
         T value;
         if (!parse_number(t, value))
             fail_load(*name_, "bad number " + quoted(t) + " on line " +
-                                 std::to_string(cursor_.line_number()) + " while reading " + what);
+                                  std::to_string(cursor_.line_number()) + " while reading " + what);
         return value;
     }
 
@@ -118,7 +119,8 @@ Mesh read_off(const char* data, size_t size, const std::string& name) {
     uint64_t dimension = kw.n_dim ? tokens.number<uint64_t>("the dimension of nOFF") : 3;
     if (kw.four_d) dimension += 1;
     if (dimension != 3)
-        fail_load(name, "only 3-D OFF files are supported (this one has dimension " + std::to_string(dimension) + ")");
+        fail_load(name, "only 3-D OFF files are supported (this one has dimension " +
+                            std::to_string(dimension) + ")");
 
     uint64_t nv = tokens.number<uint64_t>("the vertex count");
     uint64_t nf = tokens.number<uint64_t>("the face count");

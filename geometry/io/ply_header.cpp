@@ -16,11 +16,11 @@ struct TypeName {
 };
 // The original names and the sized aliases (both are common in the wild).
 constexpr TypeName kTypeNames[] = {
-    {"char", PlyType::Int8},      {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-    {"uint8", PlyType::UInt8},    {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-    {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-    {"int32", PlyType::Int32},    {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-    {"float", PlyType::Float32},  {"float32", PlyType::Float32}, {"double", PlyType::Float64},
+    {"char", PlyType::Int8},       {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
+    {"uint8", PlyType::UInt8},     {"short", PlyType::Int16},     {"int16", PlyType::Int16},
+    {"ushort", PlyType::UInt16},   {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
+    {"int32", PlyType::Int32},     {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
+    {"float", PlyType::Float32},   {"float32", PlyType::Float32}, {"double", PlyType::Float64},
     {"float64", PlyType::Float64},
 };
 
@@ -57,9 +57,8 @@ void check_counts_fit(const PlyHeader& header, size_t remaining, const std::stri
         uint64_t item = e.min_item_size(header.format);
         if (item == 0) continue;  // no properties: nothing is stored per item
         if (e.count > (budget - needed) / item) {
-            fail_load(name, "header declares " + std::to_string(e.count) + " " +
-                                quoted(e.name) + " elements but only " +
-                                std::to_string(remaining) +
+            fail_load(name, "header declares " + std::to_string(e.count) + " " + quoted(e.name) +
+                                " elements but only " + std::to_string(remaining) +
                                 " bytes follow the header (file truncated or corrupt)");
         }
         needed += e.count * item;
@@ -70,17 +69,19 @@ void check_counts_fit(const PlyHeader& header, size_t remaining, const std::stri
 
 size_t ply_type_size(PlyType type) {
     switch (type) {
-        case PlyType::Int8: case PlyType::UInt8: return 1;
-        case PlyType::Int16: case PlyType::UInt16: return 2;
-        case PlyType::Int32: case PlyType::UInt32: case PlyType::Float32: return 4;
+        case PlyType::Int8:
+        case PlyType::UInt8: return 1;
+        case PlyType::Int16:
+        case PlyType::UInt16: return 2;
+        case PlyType::Int32:
+        case PlyType::UInt32:
+        case PlyType::Float32: return 4;
         case PlyType::Float64: return 8;
     }
     return 0;
 }
 
-bool ply_type_is_integer(PlyType type) {
-    return type != PlyType::Float32 && type != PlyType::Float64;
-}
+bool ply_type_is_integer(PlyType type) { return type != PlyType::Float32 && type != PlyType::Float64; }
 
 const char* ply_type_name(PlyType type) {
     switch (type) {
@@ -144,8 +145,7 @@ PlyHeader parse_ply_header(const char* data, size_t size, const std::string& nam
 
         auto words = split_words(line);
         auto bad_line = [&](const std::string& why) {
-            fail_load(name, "header line " + std::to_string(line_number) + " " + quoted(line) +
-                                ": " + why);
+            fail_load(name, "header line " + std::to_string(line_number) + " " + quoted(line) + ": " + why);
         };
         if (line_number == 1 || words.empty()) continue;  // "ply" / blank line
         std::string_view key = words[0];
@@ -154,10 +154,14 @@ PlyHeader parse_ply_header(const char* data, size_t size, const std::string& nam
             have_end = true;
         } else if (key == "format") {
             if (words.size() < 2) bad_line("missing format name");
-            if (words[1] == "ascii") header.format = PlyFormat::Ascii;
-            else if (words[1] == "binary_little_endian") header.format = PlyFormat::BinaryLittleEndian;
-            else if (words[1] == "binary_big_endian") header.format = PlyFormat::BinaryBigEndian;
-            else bad_line("unknown format");
+            if (words[1] == "ascii")
+                header.format = PlyFormat::Ascii;
+            else if (words[1] == "binary_little_endian")
+                header.format = PlyFormat::BinaryLittleEndian;
+            else if (words[1] == "binary_big_endian")
+                header.format = PlyFormat::BinaryBigEndian;
+            else
+                bad_line("unknown format");
             have_format = true;
         } else if (key == "element") {
             if (words.size() != 3) bad_line("expected 'element NAME COUNT'");

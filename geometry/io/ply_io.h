@@ -21,7 +21,6 @@ Mesh read_ply(const char* data, size_t size, const std::string& name);
 // x y z nx ny nz k1 k2 d1x d1y d1z d2x d2y d2z a b c d, then `uchar flags`)
 // and its faces (`list uchar int vertex_indices`). Binary little-endian by
 // default, ASCII on request. Throws MeshWriteError.
-void write_ply(const std::string& path, const Mesh& mesh, const SurfaceFields& fields,
-               bool binary = true);
+void write_ply(const std::string& path, const Mesh& mesh, const SurfaceFields& fields, bool binary = true);
 
 }  // namespace kappa

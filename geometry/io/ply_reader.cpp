@@ -20,6 +20,13 @@ struct ElementPlan {
     enum class Kind { Skip, Vertices, Faces, Strips } kind = Kind::Skip;
     int coord[3] = {-1, -1, -1};  // property indices of x, y, z (vertices)
     int index_list = -1;          // property index of the vertex index list
+
+    // 0, 1, 2 if property k is x, y or z, else -1.
+    int axis_of(size_t k) const {
+        for (int a = 0; a < 3; ++a)
+            if (coord[a] == int(k)) return a;
+        return -1;
+    }
 };
 
 struct ReadContext {
@@ -36,21 +43,17 @@ struct ReadContext {
 }
 
 [[noreturn]] void fail_bad_value(const ReadContext& ctx, const std::string& what) {
-    fail_load(ctx.name, what + " in element " + quoted(ctx.element->name) + " (item " +
-                            std::to_string(ctx.item) + ")");
+    fail_load(ctx.name,
+              what + " in element " + quoted(ctx.element->name) + " (item " + std::to_string(ctx.item) + ")");
 }
 
-template <typename Source>
-void check(ReadStatus status, const ReadContext& ctx, Source& source);
-
-template <>
-void check(ReadStatus status, const ReadContext& ctx, BinarySource&) {
+// Turns a failed read into the error message of its encoding.
+void check(ReadStatus status, const ReadContext& ctx, const BinarySource&) {
     if (status == ReadStatus::EndOfData) fail_truncated(ctx);
     if (status == ReadStatus::BadValue) fail_bad_value(ctx, "non-integer value where an integer is required");
 }
 
-template <>
-void check(ReadStatus status, const ReadContext& ctx, AsciiSource& source) {
+void check(ReadStatus status, const ReadContext& ctx, const AsciiSource& source) {
     if (status == ReadStatus::EndOfData) fail_truncated(ctx);
     if (status == ReadStatus::BadValue)
         fail_bad_value(ctx, "bad number " + quoted(source.last_token()) + " on line " +
@@ -69,8 +72,7 @@ void read_element(Source& source, const ElementPlan& plan, ReadContext& ctx, OnI
         for (size_t k = 0; k < element.properties.size(); ++k) {
             const PlyProperty& p = element.properties[k];
             if (!p.is_list) {
-                int axis = k == size_t(plan.coord[0]) ? 0 : k == size_t(plan.coord[1]) ? 1
-                         : k == size_t(plan.coord[2]) ? 2 : -1;
+                int axis = plan.axis_of(k);
                 if (axis >= 0)
                     check(source.scalar(p.type, xyz[axis]), ctx, source);
                 else
@@ -93,15 +95,16 @@ void read_element(Source& source, const ElementPlan& plan, ReadContext& ctx, OnI
 }
 
 // Fast path: fixed-size vertex records with float x, y, z in host order.
-bool read_vertices_fast(const char*& pos, const char* end, const PlyElement& element,
-                        const ElementPlan& plan, ReadContext& ctx, std::vector<glm::vec3>& out) {
+bool read_vertices_fast(const char*& pos, const char* end, const PlyElement& element, const ElementPlan& plan,
+                        ReadContext& ctx, std::vector<glm::vec3>& out) {
     size_t stride = element.fixed_item_size();
     if (stride == 0) return false;
     size_t offset[3];
     for (int a = 0; a < 3; ++a) {
         if (element.properties[size_t(plan.coord[a])].type != PlyType::Float32) return false;
         offset[a] = 0;
-        for (int k = 0; k < plan.coord[a]; ++k) offset[a] += ply_type_size(element.properties[size_t(k)].type);
+        for (int k = 0; k < plan.coord[a]; ++k)
+            offset[a] += ply_type_size(element.properties[size_t(k)].type);
     }
     if (element.count > uint64_t(end - pos) / stride) {
         ctx.item = uint64_t(end - pos) / stride;
@@ -128,8 +131,8 @@ bool read_vertices_fast(const char*& pos, const char* end, const PlyElement& ele
 
 // Fast path: faces made of scalars around one list with a one-byte count and
 // 32-bit indices, in host order; triangles are copied directly.
-bool read_faces_fast(const char*& pos, const char* end, const PlyElement& element,
-                     const ElementPlan& plan, ReadContext& ctx, std::vector<Face>& faces) {
+bool read_faces_fast(const char*& pos, const char* end, const PlyElement& element, const ElementPlan& plan,
+                     ReadContext& ctx, std::vector<Face>& faces) {
     const PlyProperty& list = element.properties[size_t(plan.index_list)];
     if (list.count_type != PlyType::UInt8 && list.count_type != PlyType::Int8) return false;
     if (list.type != PlyType::Int32 && list.type != PlyType::UInt32) return false;
@@ -157,7 +160,9 @@ bool read_faces_fast(const char*& pos, const char* end, const PlyElement& elemen
             std::memcpy(v, pos, 12);
             if (v[0] >= nv || v[1] >= nv || v[2] >= nv) {
                 for (uint32_t i : v)
-                    if (i >= nv) fail_bad_index(ctx.name, "face", ctx.item, signed_index ? int64_t(int32_t(i)) : int64_t(i), nv);
+                    if (i >= nv)
+                        fail_bad_index(ctx.name, "face", ctx.item,
+                                       signed_index ? int64_t(int32_t(i)) : int64_t(i), nv);
             }
             faces.emplace_back(v[0], v[1], v[2]);
         } else {
@@ -180,9 +185,11 @@ ElementPlan plan_element(const PlyElement& e, bool first_vertex_element, const s
         const char* axes[3] = {"x", "y", "z"};
         for (int a = 0; a < 3; ++a) {
             plan.coord[a] = e.find(axes[a]);
-            if (plan.coord[a] < 0) fail_load(name, std::string("vertex element has no '") + axes[a] + "' property");
+            if (plan.coord[a] < 0)
+                fail_load(name, std::string("vertex element has no '") + axes[a] + "' property");
             if (e.properties[size_t(plan.coord[a])].is_list)
-                fail_load(name, std::string("vertex property '") + axes[a] + "' is a list, expected a number");
+                fail_load(name,
+                          std::string("vertex property '") + axes[a] + "' is a list, expected a number");
         }
     } else if (e.name == "face" || e.name == "tristrips") {
         plan.kind = e.name == "face" ? ElementPlan::Kind::Faces : ElementPlan::Kind::Strips;

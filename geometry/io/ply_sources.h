@@ -66,8 +66,10 @@ public:
             case PlyType::UInt16: out = load<uint16_t>(); return ReadStatus::Ok;
             case PlyType::Int32: out = load<int32_t>(); return ReadStatus::Ok;
             case PlyType::UInt32: out = load<uint32_t>(); return ReadStatus::Ok;
-            case PlyType::Float32: return double_to_int64(load<float>(), out) ? ReadStatus::Ok : ReadStatus::BadValue;
-            case PlyType::Float64: return double_to_int64(load<double>(), out) ? ReadStatus::Ok : ReadStatus::BadValue;
+            case PlyType::Float32:
+                return double_to_int64(load<float>(), out) ? ReadStatus::Ok : ReadStatus::BadValue;
+            case PlyType::Float64:
+                return double_to_int64(load<double>(), out) ? ReadStatus::Ok : ReadStatus::BadValue;
         }
         return ReadStatus::BadValue;
     }

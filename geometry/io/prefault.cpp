@@ -1,8 +1,8 @@
 #include "prefault.h"
 
-#include <cstdint>
 #include <sys/mman.h>
 #include <unistd.h>
+#include <cstdint>
 
 #ifndef MADV_POPULATE_WRITE
 #define MADV_POPULATE_WRITE 23  // Linux 5.14

@@ -33,7 +33,8 @@ Mesh read_binary(const char* data, size_t size, const std::string& name) {
     const char* p = data + kHeaderSize;
     for (size_t t = 0; t < n; ++t, p += kTriangleSize)
         for (size_t c = 0; c < 3; ++c)
-            for (int a = 0; a < 3; ++a) corners[3 * t + c][a] = load_little_endian<float>(p + 12 + 12 * c + 4 * a);
+            for (int a = 0; a < 3; ++a)
+                corners[3 * t + c][a] = load_little_endian<float>(p + 12 + 12 * c + 4 * a);
     check_corners_finite(corners, name);
     return weld_exact(corners);
 }
@@ -86,7 +87,8 @@ Mesh read_ascii(const char* data, size_t size, const std::string& name) {
             if (!in_facet) fail_here(quoted(word) + " outside a facet");
         } else if (equals_ignoring_case(word, "vertex")) {
             if (!in_facet) fail_here("vertex outside a facet");
-            if (++facet_corners > 3) fail_here("facet " + std::to_string(facets) + " has more than 3 vertices");
+            if (++facet_corners > 3)
+                fail_here("facet " + std::to_string(facets) + " has more than 3 vertices");
             float x = number(), y = number(), z = number();
             corners.emplace_back(x, y, z);
         } else if (equals_ignoring_case(word, "endfacet")) {
@@ -133,8 +135,9 @@ Mesh read_stl(const char* data, size_t size, const std::string& name) {
     } else if (size >= kHeaderSize) {
         uint64_t n = declared_triangles(data);
         fail_load(name, "not a valid STL file: not ASCII STL, and as binary STL its header declares " +
-                            std::to_string(n) + " triangles (" + std::to_string(kHeaderSize + n * kTriangleSize) +
-                            " bytes) but the file has " + std::to_string(size) + " bytes");
+                            std::to_string(n) + " triangles (" +
+                            std::to_string(kHeaderSize + n * kTriangleSize) + " bytes) but the file has " +
+                            std::to_string(size) + " bytes");
     } else {
         fail_load(name, "not an STL file (too short for binary STL, no 'solid' keyword)");
     }

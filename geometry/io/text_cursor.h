@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <type_traits>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 
 namespace kappa::io {
 
