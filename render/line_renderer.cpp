@@ -2,24 +2,25 @@
 
 #include <glm/geometric.hpp>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace kappa::render {
 
 namespace {
 
-std::vector<ShaderStage> line_program(const char* geometry_file) {
+std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files) {
     return {{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "view_dependent.glsl", "lines_vert.glsl"}},
-            {GL_GEOMETRY_SHADER, {"line_quad.glsl", geometry_file}},
+            {GL_GEOMETRY_SHADER, std::move(geometry_files)},
             {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}};
 }
 
 }  // namespace
 
 LineRenderer::LineRenderer()
-    : isolines_(line_program("isolines_geom.glsl")),
-      boundaries_(line_program("boundary_geom.glsl")),
-      hatching_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "hatch_vert.glsl"}},
-                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "hatch_geom.glsl"}},
-                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {}
+    : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl", "hatch_strokes.glsl"})),
+      boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})) {}
 
 void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                               const RenderSettings& s) {
@@ -31,6 +32,10 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
     p.set("u_line_width", s.line_width);
     p.set("u_depth", 0);
     p.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
+    p.set("u_normal_matrix", frame.normal_matrix);
+    const float len = glm::length(s.light_dir);
+    p.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
+    p.set("u_hatching", int(s.hatching));
 }
 
 void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
@@ -43,8 +48,12 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
 
-    if (s.lines.contours || s.lines.suggestive) {
+    // Contours, suggestive contours and hatching strokes: one pass over the triangles.
+    if (s.lines.contours || s.lines.suggestive || s.hatching != Hatching::None) {
         set_common(isolines_, mesh, frame, s);
+        isolines_.set("u_hatch_spacing", s.hatch_spacing);
+        isolines_.set("u_stroke_length", s.hatch_stroke_length);
+        isolines_.set("u_stroke_width", s.hatch_stroke_width);
         isolines_.set("u_contours", int(s.lines.contours));
         isolines_.set("u_suggestive", int(s.lines.suggestive));
         isolines_.set("u_sc_threshold", s.sc_threshold);
@@ -54,17 +63,6 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {
         set_common(boundaries_, mesh, frame, s);
         mesh.draw_boundary_edges();
-    }
-    if (s.hatching != Hatching::None) {
-        set_common(hatching_, mesh, frame, s);
-        hatching_.set("u_normal_matrix", frame.normal_matrix);
-        const float len = glm::length(s.light_dir);
-        hatching_.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
-        hatching_.set("u_hatching", int(s.hatching));
-        hatching_.set("u_hatch_spacing", s.hatch_spacing);
-        hatching_.set("u_stroke_length", s.hatch_stroke_length);
-        hatching_.set("u_stroke_width", s.hatch_stroke_width);
-        mesh.draw_triangles();
     }
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);

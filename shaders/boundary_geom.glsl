@@ -10,6 +10,8 @@ in LineVertex {
     float sc_strength;
     float unreliable;
     flat int id;
+    vec4 hatch_dirs;
+    float tone;
 } v_in[];
 
 void main() {
