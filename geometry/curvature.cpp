@@ -66,11 +66,11 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
         const glm::vec3 n = normals[vi];
         glm::vec3 u, v;
         tangent_frame(n, u, v);
-        double ku = 0, kuv = 0, kv = 0, wsum = 0;
+        float ku = 0, kuv = 0, kv = 0, wsum = 0;
         for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
             const uint32_t c = vf.corners[k], fi = c / 3;
             if (!fits.ok[fi]) continue;
-            const double w = faces.corner_areas[fi][c % 3];
+            const float w = faces.corner_areas[fi][c % 3];
             const glm::vec3 &t = fits.t[fi], &b = fits.b[fi];
             const Tensor2 r = transform_tensor(frame_change(t, b, glm::cross(t, b), u, v, n), fits.tensor[fi]);
             ku += w * r.ku;
@@ -78,7 +78,7 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
             kv += w * r.kv;
             wsum += w;
         }
-        if (wsum > 0) out.tensor[vi] = {float(ku / wsum), float(kuv / wsum), float(kv / wsum)};
+        if (wsum > 0) out.tensor[vi] = {ku / wsum, kuv / wsum, kv / wsum};
     });
     return out;
 }

@@ -41,7 +41,7 @@ bool fit_face_dcurv(const glm::dvec3 (&e)[3], const Tensor2 (&fcurv)[3], const g
 namespace {
 
 // A vertex's tangent frame (u, v) for normal n, rotated into face f's plane, in (t, b) coordinates.
-FrameChange vertex_in_face(const FaceFits& fits, size_t f, const glm::vec3& u, const glm::vec3& v,
+inline FrameChange vertex_in_face(const FaceFits& fits, size_t f, const glm::vec3& u, const glm::vec3& v,
                            const glm::vec3& n) {
     const glm::vec3 &t = fits.t[f], &b = fits.b[f];
     return frame_change(t, b, glm::cross(t, b), u, v, n);
@@ -72,23 +72,22 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, co
 
     std::vector<glm::vec4> dcurv(nv, glm::vec4(0.0f));
     parallel_for(nv, [&](size_t vi) {
-        // (d1, d2) = (c u - s v, s u + c v) in the vertex frame (u, v).
         glm::vec3 u, v;
         tangent_frame(normals[vi], u, v);
-        const float c = glm::dot(d1[vi], u), s = -glm::dot(d1[vi], v);
-        glm::dvec4 sum(0.0);
-        double wsum = 0;
+        // Average in the vertex frame (u, v), then turn the (linear) result into the principal frame.
+        glm::vec4 sum(0.0f);
+        float wsum = 0;
         for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
             const uint32_t corner = vf.corners[k], fi = corner / 3;
             if (!face_ok[fi]) continue;
-            const double w = corner_areas[fi][corner % 3];
-            const FrameChange r = vertex_in_face(fits, fi, u, v, normals[vi]);
-            const FrameChange m{c * r.m00 - s * r.m10, c * r.m01 - s * r.m11, s * r.m00 + c * r.m10,
-                                s * r.m01 + c * r.m11};
-            sum += w * glm::dvec4(transform_dcurv(m, face_dcurv[fi]));
+            const float w = corner_areas[fi][corner % 3];
+            sum += w * transform_dcurv(vertex_in_face(fits, fi, u, v, normals[vi]), face_dcurv[fi]);
             wsum += w;
         }
-        if (wsum > 0) dcurv[vi] = glm::vec4(sum / wsum);
+        if (!(wsum > 0)) return;
+        // (d1, d2) = (c u - s v, s u + c v) in (u, v).
+        const float c = glm::dot(d1[vi], u), s = -glm::dot(d1[vi], v);
+        dcurv[vi] = transform_dcurv(FrameChange{c, -s, s, c}, sum / wsum);
     });
     return dcurv;
 }
