@@ -9,6 +9,7 @@
 #include "ply_sources.h"
 #include "prefault.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace kappa {
@@ -146,7 +147,9 @@ bool read_faces_fast(const char*& pos, const char* end, const PlyElement& elemen
     const bool signed_count = list.count_type == PlyType::Int8;
     const bool signed_index = list.type == PlyType::Int32;
     const uint64_t nv = ctx.vertex_count;
-    reserve_prefaulted(faces, faces.size() + size_t(element.count));
+    // Room for the triangles the remaining bytes can hold (counts are not trusted).
+    uint64_t triangles_left = uint64_t(end - pos) / (before + 13 + after);
+    reserve_prefaulted(faces, faces.size() + size_t(std::min(element.count, triangles_left)));
     int64_t polygon[256];
     for (ctx.item = 0; ctx.item < element.count; ++ctx.item) {
         if (size_t(end - pos) < before + 1) fail_truncated(ctx);
