@@ -2,6 +2,8 @@
 // relative indices, polygons fan-triangulated, other statements ignored.
 #include "test_io_support.h"
 
+#include <cmath>
+
 using namespace kappa;
 using kappa::test::obj_from;
 
@@ -36,4 +38,19 @@ TEST_CASE("OBJ: a file of vertices only is a point cloud", "[io][obj]") {
     Mesh m = obj_from("v 1 2 3\nv 4 5 6\n");
     CHECK(m.vertex_count() == 2);
     CHECK(m.face_count() == 0);
+}
+
+TEST_CASE("OBJ: polygons up to 255 corners; larger ones are a clear error", "[io][obj]") {
+    auto polygon_file = [](int n) {
+        std::string s;
+        for (int i = 0; i < n; ++i)
+            s += "v " + std::to_string(std::cos(i * 0.1)) + " " + std::to_string(std::sin(i * 0.1)) + " 0\n";
+        s += "f";
+        for (int i = 1; i <= n; ++i) s += " " + std::to_string(i);
+        return s + "\n";
+    };
+    Mesh m = obj_from(polygon_file(255));
+    CHECK(m.face_count() == 253);
+    // tinyobjloader stores corner counts in a byte.
+    REQUIRE_LOAD_ERROR(obj_from(polygon_file(256)), "test.obj", "more than 255 corners");
 }
