@@ -28,6 +28,7 @@ struct Command {
 
 // One line per subcommand, in the order `kappa --help` lists them.
 const Command kCommands[] = {
+    {"view", "open a mesh in an interactive window with a panel for every rendering setting", kappa::app::run_view},
     {"curvature", "estimate normals, curvature and its derivative per vertex; write CSV or PLY",
      kappa::app::run_curvature},
     {"info", "print mesh statistics: counts, bounds, edges, boundaries, components", kappa::app::run_info},

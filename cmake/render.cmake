@@ -36,3 +36,9 @@ add_library(kappa_render STATIC ${KAPPA_RENDER_SOURCES} ${KAPPA_SHADER_CPP})
 target_include_directories(kappa_render PUBLIC ${CMAKE_SOURCE_DIR})
 target_link_libraries(kappa_render PUBLIC kappa_geometry kappa_glad OpenGL::OpenGL OpenGL::EGL
                       PRIVATE PNG::PNG)
+
+# --- the viewer's window and UI: GLFW (X11) and Dear ImGui ----------------------
+# Debian's libimgui.a already contains the GLFW and OpenGL3 backends (platform.md).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(KAPPA_UI REQUIRED IMPORTED_TARGET glfw3 imgui)
+target_link_libraries(kappa_render PUBLIC PkgConfig::KAPPA_UI)

@@ -1,0 +1,80 @@
+// `kappa view [MESH]`: the interactive viewer (app/viewer/). It draws with
+// the same renderer and settings as `kappa render`, so every appearance
+// option of `kappa render` is accepted here too and a view saved as .xf
+// renders identically headless. --frames/--screenshot/--script make scripted
+// runs for tests (under xvfb-run).
+#include "cli_options.h"
+#include "commands.h"
+
+#include "app/viewer/input_script.h"
+#include "app/viewer/view_state.h"
+#include "app/viewer/viewer_app.h"
+#include "render/egl_context.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace kappa::app {
+
+int run_view(int argc, char** argv) {
+    viewer::ViewerOptions o;
+    bool no_panel = false;
+    std::string script_path;
+    cli::Parser p("view", "[MESH] [options]",
+                  "Open a mesh in a window (GLFW, OpenGL 3.3) with a panel for every setting of 'kappa render'. "
+                  "Left drag orbits, right or middle drag pans, the wheel zooms toward the cursor; F1 lists the "
+                  "keyboard shortcuts.");
+    p.positional("MESH", o.mesh_path, "mesh file (.ply .obj .off .stl); default: the built-in model", false)
+        .size("--size", o.size, "window size (default 1280x800)")
+        .text("--xf", o.xf_path, "start from this trimesh2/rtsc viewpoint file; Ctrl+S saves the view there",
+              "FILE")
+        .flag("--no-panel", no_panel, "start with the panel hidden (Tab shows it)");
+    // Appearance and smoothing: the options of `kappa render`, same names and values.
+    for (const std::string& name : viewer::setting_names()) {
+        if (name == "colorbar") {  // a flag in `kappa render`
+            p.flag("--colorbar", o.state.settings.colorbar, "as in 'kappa render'");
+            continue;
+        }
+        p.option("--" + name, "VALUE", "as in 'kappa render'", [&o, name, &p](const std::string& v) {
+            if (auto error = viewer::assign_setting(o.state, name, v)) throw p.error(*error);
+            return true;
+        });
+    }
+    p.integer("--frames", o.frames, "draw N frames, save --screenshot, exit (scripted runs)", 1, 1000000)
+        .text("--screenshot", o.screenshot, "PNG of the whole window, panel included, after --frames", "OUT.png")
+        .text("--script", script_path,
+              "synthetic input: drag, scroll, key, set, screenshot... steps (app/viewer/input_script.h)", "FILE")
+        .threads()
+        .epilog("Without a display (no X server) it exits with status 1: use 'kappa render' to render headless.\n"
+                "Examples:\n"
+                "  kappa view bunny.ply --smooth-curvature 0.001\n"
+                "  kappa view --shading none --lines contours,suggestive\n"
+                "  xvfb-run -a kappa view bunny.ply --size 640x480 --frames 3 --screenshot shot.png");
+    if (auto status = p.parse(argc, argv)) return *status;
+    if (!o.screenshot.empty() && o.frames == 0) o.frames = 2;  // the panel is laid out on the first frame
+    o.show_panel = !no_panel;
+    if (!script_path.empty()) {
+        try {
+            o.script = viewer::read_script(script_path);
+        } catch (const std::exception& e) {
+            return cli::fail(std::string("view: ") + e.what());
+        }
+        if (o.script.empty() && o.frames == 0) o.frames = 1;
+    }
+
+    // Debian's GLFW is X11 only: say so in one line rather than fail later.
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display) {
+        std::fprintf(stderr, "kappa view: no display (DISPLAY is not set); use 'kappa render' to render headless\n");
+        return 1;
+    }
+    try {
+        viewer::ViewerApp app(std::move(o));
+        return app.run();
+    } catch (const render::ContextError& e) {
+        std::fprintf(stderr, "kappa view: %s\n", e.what());
+        return 1;
+    }
+}
+
+}  // namespace kappa::app

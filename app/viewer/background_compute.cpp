@@ -1,0 +1,148 @@
+#include "app/viewer/background_compute.h"
+
+#include "app/mesh_source.h"
+#include "geometry/feature_size.h"
+#include "geometry/io/mesh_io.h"
+#include "geometry/vertex_flags.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+
+namespace kappa::viewer {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+ModelSummary summarize(const SurfaceFields& f) {
+    ModelSummary s;
+    float inf = std::numeric_limits<float>::infinity();
+    s.k1_min = s.k2_min = inf;
+    s.k1_max = s.k2_max = -inf;
+    for (size_t i = 0; i < f.size(); ++i) {
+        const uint8_t flags = i < f.flags.size() ? f.flags[i] : 0;
+        if (flags & kFlagBoundary) ++s.boundary_vertices;
+        if (flags & kFlagUnreliable) {
+            ++s.flagged_vertices;
+            continue;
+        }
+        s.k1_min = std::min(s.k1_min, f.k1[i]), s.k1_max = std::max(s.k1_max, f.k1[i]);
+        s.k2_min = std::min(s.k2_min, f.k2[i]), s.k2_max = std::max(s.k2_max, f.k2[i]);
+    }
+    if (s.k1_min > s.k1_max) s.k1_min = s.k1_max = s.k2_min = s.k2_max = 0;  // no reliable vertex
+    return s;
+}
+
+BackgroundCompute::BackgroundCompute() : worker_([this] { run(); }) {}
+
+BackgroundCompute::~BackgroundCompute() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        quit_ = true;
+        pending_.reset();
+    }
+    wake_.notify_one();
+    worker_.join();
+}
+
+void BackgroundCompute::load(const std::string& path, const SmoothingOptions& smoothing) {
+    Request r;
+    r.path = path;
+    r.smoothing = smoothing;
+    submit(std::move(r));
+}
+
+void BackgroundCompute::recompute(const Model& model, const SmoothingOptions& smoothing) {
+    Request r;
+    r.path = model.path;
+    r.mesh = model.mesh;
+    r.smoothing = smoothing;
+    submit(std::move(r));
+}
+
+void BackgroundCompute::submit(Request request) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        request.generation = ++generation_;
+        pending_ = std::move(request);
+        done_.reset();  // an older result is out of date now
+        busy_ = true;
+    }
+    wake_.notify_one();
+}
+
+std::string BackgroundCompute::stage() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return stage_;
+}
+
+std::optional<BackgroundCompute::Result> BackgroundCompute::take() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<Result> r = std::move(done_);
+    done_.reset();
+    return r;
+}
+
+void BackgroundCompute::run() {
+    for (;;) {
+        Request request;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [this] { return quit_ || pending_; });
+            if (quit_) return;
+            request = std::move(*pending_);
+            pending_.reset();
+            progress_ = 0;
+        }
+        Result result = execute(request);
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (request.generation == generation_) {  // still the newest request
+            done_ = std::move(result);
+            busy_ = false;
+        }
+    }
+}
+
+BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
+    Result result;
+    Model m;
+    m.path = request.path;
+    m.smoothing = request.smoothing;
+    const auto set_stage = [this](const char* stage) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stage_ = stage;
+    };
+    try {
+        if (request.mesh) {
+            m.mesh = request.mesh;
+        } else {
+            set_stage("loading");
+            const auto t = std::chrono::steady_clock::now();
+            m.mesh = std::make_shared<const Mesh>(app::load_mesh_or_default(request.path));
+            m.load_s = seconds_since(t);
+        }
+        const auto t = std::chrono::steady_clock::now();
+        m.fields = compute_surface_fields(*m.mesh, request.smoothing, &m.stages, [&](float f, const char* stage) {
+            progress_ = f;
+            set_stage(stage);
+        });
+        set_stage("feature size");
+        m.feature_size = feature_size(*m.mesh, m.fields);
+        m.fields_s = seconds_since(t);
+        m.summary = summarize(m.fields);
+        result.model = std::move(m);
+    } catch (const std::bad_alloc&) {
+        result.error = (request.path.empty() ? "built-in model" : request.path) + ": out of memory";
+    } catch (const std::exception& e) {  // kappa::MeshLoadError: "PATH: problem"
+        result.error = e.what();
+    }
+    progress_ = 1;
+    return result;
+}
+
+}  // namespace kappa::viewer

@@ -1,0 +1,90 @@
+// Loads meshes and estimates curvature on a worker thread, so the viewer's
+// window stays responsive (orbiting keeps working) while a large mesh is read
+// or a smoothing width is changed. The main thread polls progress() and
+// take(); a finished model replaces the old one in a single frame. When a
+// new request arrives while one runs, the running one finishes (the
+// curvature code cannot be interrupted) and its result is dropped.
+#pragma once
+
+#include "geometry/mesh.h"
+#include "geometry/surface_analysis.h"
+#include "geometry/surface_fields.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace kappa::viewer {
+
+// Numbers shown in the mesh panel.
+struct ModelSummary {
+    size_t boundary_vertices = 0, flagged_vertices = 0;  // geometry/vertex_flags.h bits
+    float k1_min = 0, k1_max = 0, k2_min = 0, k2_max = 0;  // over reliable vertices
+};
+
+// A mesh with everything the renderer needs.
+struct Model {
+    std::string path;  // empty: the built-in model
+    std::shared_ptr<const Mesh> mesh;
+    SurfaceFields fields;
+    float feature_size = 1;
+    SmoothingOptions smoothing;
+    ModelSummary summary;
+    StageTimes stages;
+    double load_s = 0, fields_s = 0;  // wall-clock seconds: reading the file, curvature + feature size
+};
+
+ModelSummary summarize(const SurfaceFields& fields);
+
+class BackgroundCompute {
+public:
+    BackgroundCompute();
+    ~BackgroundCompute();  // waits for the running job
+    BackgroundCompute(const BackgroundCompute&) = delete;
+    BackgroundCompute& operator=(const BackgroundCompute&) = delete;
+
+    // Reads `path` ("" = the built-in model), then computes its fields.
+    void load(const std::string& path, const SmoothingOptions& smoothing);
+    // Recomputes the fields of an already loaded mesh with new widths.
+    void recompute(const Model& model, const SmoothingOptions& smoothing);
+
+    bool busy() const { return busy_; }
+    float progress() const { return progress_; }  // of the running job, in [0, 1]
+    std::string stage() const;                    // "loading", "normals", ...
+
+    // The newest request's result once it is ready (then nullopt until the
+    // next). An error message instead when the mesh could not be read.
+    struct Result {
+        std::optional<Model> model;
+        std::string error;
+    };
+    std::optional<Result> take();
+
+private:
+    struct Request {
+        std::string path;
+        std::shared_ptr<const Mesh> mesh;  // set: recompute only
+        SmoothingOptions smoothing;
+        unsigned generation = 0;
+    };
+    void submit(Request request);
+    void run();
+    Result execute(const Request& request);
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<Request> pending_;
+    std::optional<Result> done_;
+    unsigned generation_ = 0;  // of the newest request
+    bool quit_ = false;
+    std::atomic<bool> busy_{false};
+    std::atomic<float> progress_{0};
+    std::string stage_;  // guarded by mutex_
+    std::thread worker_;  // last: starts once every member above exists
+};
+
+}  // namespace kappa::viewer

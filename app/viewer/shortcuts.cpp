@@ -1,0 +1,61 @@
+#include "app/viewer/shortcuts.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace kappa::viewer {
+
+const std::vector<Shortcut>& shortcuts() {
+    static const std::vector<Shortcut> table = {
+        {GLFW_KEY_C, 0, "C", Action::ToggleContours, "occluding contours on/off"},
+        {GLFW_KEY_S, 0, "S", Action::ToggleSuggestive, "suggestive contours on/off"},
+        {GLFW_KEY_B, 0, "B", Action::ToggleBoundaries, "boundary lines on/off"},
+        {GLFW_KEY_L, 0, "L", Action::CycleShading, "next shading: none, lambert, toon"},
+        {GLFW_KEY_M, 0, "M", Action::CycleColorMap, "next curvature colour map"},
+        {GLFW_KEY_K, 0, "K", Action::ToggleColorBar, "colour bar on/off"},
+        {GLFW_KEY_H, 0, "H", Action::CycleHatching, "next hatching: none, min, max, cross"},
+        {GLFW_KEY_G, 0, "G", Action::ToggleFade, "fading of weak suggestive contours on/off"},
+        {GLFW_KEY_A, 0, "A", Action::ToggleMsaa, "4x multisampling on/off"},
+        {GLFW_KEY_EQUAL, 0, "=", Action::WiderLines, "wider lines"},
+        {GLFW_KEY_MINUS, 0, "-", Action::ThinnerLines, "thinner lines"},
+        {GLFW_KEY_RIGHT_BRACKET, 0, "]", Action::RaiseThreshold, "raise the suggestive-contour threshold"},
+        {GLFW_KEY_LEFT_BRACKET, 0, "[", Action::LowerThreshold, "lower the suggestive-contour threshold"},
+        {GLFW_KEY_F, 0, "F", Action::FitView, "fit the model to the window"},
+        {GLFW_KEY_R, 0, "R", Action::ResetView, "reset the view (from +z)"},
+        {GLFW_KEY_TAB, 0, "Tab", Action::TogglePanel, "show/hide the panel"},
+        {GLFW_KEY_F1, 0, "F1", Action::ToggleHelp, "this help"},
+        {GLFW_KEY_SLASH, GLFW_MOD_SHIFT, "?", Action::ToggleHelp, "this help"},
+        {GLFW_KEY_P, 0, "P", Action::SaveScreenshot, "save a screenshot (path in the File section)"},
+        {GLFW_KEY_S, GLFW_MOD_CONTROL, "Ctrl+S", Action::SaveView, "save the view to the .xf file"},
+        {GLFW_KEY_O, GLFW_MOD_CONTROL, "Ctrl+O", Action::LoadView, "load the view from the .xf file"},
+        {GLFW_KEY_Q, GLFW_MOD_CONTROL, "Ctrl+Q", Action::Quit, "quit"},
+    };
+    return table;
+}
+
+const Shortcut* find_shortcut(int key, int mods) {
+    const int relevant = mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER);
+    for (const auto& s : shortcuts()) {
+        if (s.key != key) continue;
+        if (s.mods & GLFW_MOD_SHIFT) {
+            if ((mods & GLFW_MOD_SHIFT) && relevant == 0) return &s;
+        } else if (relevant == s.mods) {
+            return &s;
+        }
+    }
+    return nullptr;
+}
+
+const Shortcut* find_shortcut(const std::string& name) {
+    auto lower = [](std::string s) {
+        std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        return s;
+    };
+    for (const auto& s : shortcuts())
+        if (lower(s.name) == lower(name)) return &s;
+    return nullptr;
+}
+
+}  // namespace kappa::viewer

@@ -1,0 +1,32 @@
+// The viewer's keyboard shortcuts: one table used by the key handler, the
+// help window (F1 or ?), scripts (`key NAME`) and the README.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace kappa::viewer {
+
+enum class Action {
+    ToggleContours, ToggleSuggestive, ToggleBoundaries, CycleShading, CycleColorMap, ToggleColorBar,
+    CycleHatching, ToggleFade, ToggleMsaa, WiderLines, ThinnerLines, RaiseThreshold, LowerThreshold,
+    FitView, ResetView, TogglePanel, ToggleHelp, SaveScreenshot, SaveView, LoadView, Quit,
+};
+
+struct Shortcut {
+    int key;          // GLFW_KEY_*
+    int mods;         // GLFW_MOD_* that must be held (0: none)
+    const char* name;  // as shown in help and written in scripts: "C", "Ctrl+S", "F1"
+    Action action;
+    const char* description;
+};
+
+const std::vector<Shortcut>& shortcuts();
+
+// The action for a key press, if any. Shift is ignored except where a
+// shortcut needs it ('?' is Shift+/ on a US keyboard).
+const Shortcut* find_shortcut(int key, int mods);
+// By name, case-insensitive ("c", "ctrl+s", "?"); nullptr when unknown.
+const Shortcut* find_shortcut(const std::string& name);
+
+}  // namespace kappa::viewer

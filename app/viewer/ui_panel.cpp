@@ -1,0 +1,192 @@
+#include "app/viewer/ui_panel.h"
+
+#include "app/viewer/shortcuts.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <glm/geometric.hpp>
+
+#include <cstdio>
+
+namespace kappa::viewer {
+
+namespace {
+
+using render::ColorMap;
+
+// A combo box over an enum whose names come from render_settings.h.
+template <typename E>
+bool enum_combo(const char* label, E& value, const std::vector<std::string>& names) {
+    int index = int(value);
+    const bool changed = ImGui::Combo(
+        label, &index,
+        [](void* data, int i, const char** out) {
+            *out = (*static_cast<const std::vector<std::string>*>(data))[size_t(i)].c_str();
+            return true;
+        },
+        const_cast<std::vector<std::string>*>(&names), int(names.size()));
+    if (changed) value = E(index);
+    return changed;
+}
+
+void lines_section(render::RenderSettings& s) {
+    if (!ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::Checkbox("contours (C)", &s.lines.contours);
+    ImGui::Checkbox("suggestive (S)", &s.lines.suggestive);
+    ImGui::Checkbox("boundaries (B)", &s.lines.boundaries);
+    ImGui::SliderFloat("threshold", &s.sc_threshold, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("suggestive contours where Dw kr > s / fs^2 (dimensionless s)");
+    ImGui::SliderFloat("line width", &s.line_width, 0.5f, 8.0f, "%.1f px");
+    ImGui::Checkbox("fade weak lines (G)", &s.fade);
+    ImGui::ColorEdit3("line colour", &s.line_color.x, ImGuiColorEditFlags_NoInputs);
+}
+
+void surface_section(render::RenderSettings& s, float map_range) {
+    if (!ImGui::CollapsingHeader("Surface", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    enum_combo("shading (L)", s.shading, render::shading_names());
+    ImGui::SliderFloat3("light", &s.light_dir.x, -1.0f, 1.0f, "%.2f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("direction towards the light: x right, y up, z towards you");
+    if (glm::length(s.light_dir) < 1e-3f) s.light_dir = {0, 0, 1};
+    enum_combo("colour map (M)", s.colormap, render::colormap_names());
+    if (s.colormap != ColorMap::None) {
+        ImGui::Checkbox("colour bar (K)", &s.colorbar);
+        if (s.colormap == ColorMap::DCurv)
+            ImGui::Text("range [0, %.4g]", map_range);
+        else
+            ImGui::Text("range [-%.4g, %.4g]", map_range, map_range);
+    }
+    enum_combo("hatching (H)", s.hatching, render::hatching_names());
+    if (s.hatching != render::Hatching::None)
+        ImGui::SliderFloat("spacing", &s.hatch_spacing, 2.0f, 30.0f, "%.1f px");
+    ImGui::ColorEdit4("background", &s.background.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreview);
+    ImGui::Checkbox("4x MSAA (A)", &s.msaa);
+}
+
+// Widths as multiples of the feature size are easier to choose than model units.
+bool smoothing_section(SmoothingOptions& sm, const Model* model, bool computing, float progress,
+                       const std::string& stage) {
+    if (!ImGui::CollapsingHeader("Curvature smoothing", ImGuiTreeNodeFlags_DefaultOpen)) return false;
+    const float fs = model ? model->feature_size : 1.0f;
+    bool recompute = false;
+    auto width = [&](const char* label, float& sigma) {
+        float in_fs = sigma / fs;
+        if (ImGui::SliderFloat(label, &in_fs, 0.0f, 2.0f, in_fs > 0 ? "%.3f fs" : "off")) sigma = in_fs * fs;
+        recompute |= ImGui::IsItemDeactivatedAfterEdit();
+    };
+    width("normals", sm.normals);
+    width("curvature", sm.curvature);
+    width("derivative C", sm.dcurv);
+    ImGui::TextDisabled("Gaussian sigma, fs = %.4g model units", fs);
+    if (computing) {
+        char overlay[64];
+        std::snprintf(overlay, sizeof overlay, "%s %d%%", stage.c_str(), int(progress * 100));
+        ImGui::ProgressBar(progress, ImVec2(-1, 0), overlay);
+    }
+    return recompute;
+}
+
+void mesh_section(const PanelInfo& info) {
+    if (!ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const Model* m = info.model;
+    if (!m) {
+        ImGui::TextUnformatted("loading...");
+        return;
+    }
+    ImGui::TextWrapped("%s", m->path.empty() ? "built-in model" : m->path.c_str());
+    ImGui::Text("%zu vertices, %zu faces", m->mesh->vertex_count(), m->mesh->face_count());
+    ImGui::Text("%zu boundary, %zu flagged vertices", m->summary.boundary_vertices, m->summary.flagged_vertices);
+    ImGui::Text("feature size %.4g", m->feature_size);
+    ImGui::Text("k1 in [%.4g, %.4g]", m->summary.k1_min, m->summary.k1_max);
+    ImGui::Text("k2 in [%.4g, %.4g]", m->summary.k2_min, m->summary.k2_max);
+    ImGui::Text("load %.3f s, curvature %.3f s", m->load_s, m->fields_s);
+    ImGui::Text("upload %.3f s, first frame at %.3f s", info.upload_s, info.first_frame_s);
+}
+
+void file_section(PanelState& panel, PanelRequests& r) {
+    if (!ImGui::CollapsingHeader("Files")) return;
+    ImGui::InputText("##open", &panel.open_path);
+    ImGui::SameLine();
+    r.open = ImGui::Button("Open mesh");
+    ImGui::InputText("##png", &panel.screenshot_path);
+    ImGui::SameLine();
+    r.screenshot = ImGui::Button("Screenshot");
+    ImGui::Checkbox("with the panel", &panel.screenshot_with_panel);
+    ImGui::InputText("##xf", &panel.view_path);
+    ImGui::SameLine();
+    r.save_view = ImGui::Button("Save");
+    ImGui::SameLine();
+    r.load_view = ImGui::Button("Load");
+    ImGui::TextDisabled("views are trimesh2/rtsc .xf files: kappa render --xf");
+}
+
+}  // namespace
+
+float panel_width(float ui_scale) { return 330.0f * ui_scale; }
+
+PanelRequests draw_panel(ViewState& state, PanelState& panel, const PanelInfo& info, float ui_scale) {
+    PanelRequests r;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(panel_width(ui_scale), display.y), ImGuiCond_Always);
+    ImGui::Begin("kappa", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-115 * ui_scale);  // room for the labels
+    ImGui::Text("%.1f ms/frame (%.0f fps)", info.frame_ms, info.frame_ms > 0 ? 1000.0f / info.frame_ms : 0.0f);
+    r.fit = ImGui::Button("Fit (F)");
+    ImGui::SameLine();
+    r.reset = ImGui::Button("Reset (R)");
+    ImGui::SameLine();
+    if (ImGui::Button("Help (F1)")) panel.help = !panel.help;
+    lines_section(state.settings);
+    surface_section(state.settings, info.map_range);
+    r.recompute = smoothing_section(state.smoothing, info.model, info.computing, info.progress, info.stage);
+    mesh_section(info);
+    file_section(panel, r);
+    if (!panel.message.empty()) ImGui::TextWrapped("%s", panel.message.c_str());
+    ImGui::TextWrapped("%s", info.gl.c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return r;
+}
+
+void draw_help_window(bool* open, float ui_scale) {
+    if (!*open) return;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(430 * ui_scale, 0), ImGuiCond_Appearing);
+    if (ImGui::Begin("Help", open, ImGuiWindowFlags_NoCollapse)) {
+        ImGui::TextUnformatted("Mouse");
+        ImGui::BulletText("left drag: orbit (trackball)");
+        ImGui::BulletText("right or middle drag: pan");
+        ImGui::BulletText("wheel: zoom toward the cursor");
+        ImGui::BulletText("drop a mesh file on the window to open it");
+        ImGui::Separator();
+        ImGui::TextUnformatted("Keys");
+        if (ImGui::BeginTable("keys", 2)) {
+            for (const auto& s : shortcuts()) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(s.name);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(s.description);
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+}
+
+void draw_progress_overlay(const PanelInfo& info, float ui_scale) {
+    if (!info.computing) return;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 20 * ui_scale), ImGuiCond_Always, ImVec2(0.5f, 1));
+    ImGui::SetNextWindowSize(ImVec2(300 * ui_scale, 0), ImGuiCond_Always);
+    ImGui::Begin("##progress", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%s %d%%", info.stage.c_str(), int(info.progress * 100));
+    ImGui::ProgressBar(info.progress, ImVec2(-1, 0), overlay);
+    ImGui::End();
+}
+
+}  // namespace kappa::viewer

@@ -1,0 +1,198 @@
+#include "app/viewer/viewer_app.h"
+
+#include "render/gl.h"
+#include "render/gl_loader.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace kappa::viewer {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+float median(std::deque<float> v) {
+    if (v.empty()) return 0;
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+ViewerApp::ViewerApp(ViewerOptions options) : options_(std::move(options)), state_(options_.state) {
+    panel_.visible = options_.show_panel;
+    if (!options_.xf_path.empty()) panel_.view_path = options_.xf_path;
+    // Reading the mesh and estimating curvature overlap with opening the
+    // window and compiling the shaders.
+    compute_.load(options_.mesh_path, state_.smoothing);
+}
+
+ViewerApp::~ViewerApp() {
+    if (window_) {
+        renderer_.reset();
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+}
+
+ViewerApp::Area ViewerApp::drawing_area() const {
+    const glm::vec2 window(window_->window_size());
+    const float panel = panel_.visible ? std::min(panel_width(window_->content_scale()), 0.5f * window.x) : 0.0f;
+    Area a;
+    a.origin = {panel, 0};
+    a.size = glm::max(glm::vec2(window.x - panel, window.y), glm::vec2(1));
+    a.pixels = glm::max(glm::ivec2(glm::round(a.size * window_->pixel_ratio())), glm::ivec2(1));
+    return a;
+}
+
+render::Camera ViewerApp::camera() const { return orbit_.camera(glm::vec2(drawing_area().pixels)); }
+
+void ViewerApp::open_window() {
+    render::WindowContext::Options wo;
+    wo.width = options_.size.x;
+    wo.height = options_.size.y;
+    wo.title = "kappa - " + (options_.mesh_path.empty() ? std::string("built-in model") : options_.mesh_path);
+    wo.vsync = !options_.scripted();  // scripted runs go as fast as they can
+    window_ = render::WindowContext::create(wo);
+    renderer_ = std::make_unique<render::Renderer>();
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
+    ImGui::StyleColorsDark();
+    const float scale = window_->content_scale();  // high-DPI screens
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    ImGui::GetIO().FontGlobalScale = scale;
+    install_callbacks();  // before ImGui's, which chain to ours
+    ImGui_ImplGlfw_InitForOpenGL(window_->handle(), true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    if (!options_.xf_path.empty()) load_view(options_.xf_path);
+}
+
+int ViewerApp::run() {
+    open_window();
+    while (!window_->should_close()) {
+        wait_for_events();
+        adopt_results();
+        if (options_.scripted() && !script_step()) break;
+        draw_frame();
+    }
+    return exit_status_;
+}
+
+void ViewerApp::wait_for_events() {
+    if (drag_button_ >= 0) {
+        glfwPollEvents();  // orbiting: as many frames as the machine draws
+    } else if (compute_.busy()) {
+        glfwWaitEventsTimeout(0.05);  // the progress bar moves; the computation gets the cores
+    } else if (options_.scripted() || redraw_frames_ > 0) {
+        glfwPollEvents();
+    } else {
+        glfwWaitEvents();  // idle: nothing changes until an event
+        redraw_frames_ = 2;
+    }
+    redraw_frames_ = std::max(redraw_frames_ - 1, 0);
+}
+
+// A finished load or recompute replaces the current model within this frame.
+void ViewerApp::adopt_results() {
+    auto result = compute_.take();
+    if (!result) return;
+    redraw_frames_ = 2;
+    if (!result->model) {
+        report(result->error, true);
+        if (!model_ && options_.scripted()) exit_status_ = 1;  // the requested mesh never opened
+        return;
+    }
+    const bool new_mesh = !model_ || model_->mesh != result->model->mesh;
+    model_ = std::move(result->model);
+    const auto t = std::chrono::steady_clock::now();
+    renderer_->set_mesh(*model_->mesh, model_->fields, model_->feature_size);
+    upload_s_ = float(seconds_since(t));
+    if (new_mesh) {
+        if (have_view_)
+            orbit_.set_pivot(renderer_->mesh()->bounds().center);
+        else
+            orbit_.reset(renderer_->mesh()->bounds(), drawing_area().size);
+        have_view_ = false;  // a view file applies to the first mesh only
+        window_->set_title("kappa - " + (model_->path.empty() ? std::string("built-in model") : model_->path));
+        panel_.open_path = model_->path;
+    }
+}
+
+void ViewerApp::draw_frame() {
+    const auto t_begin = std::chrono::steady_clock::now();
+    const glm::ivec2 fb = window_->framebuffer_size();
+    if (fb.x <= 0 || fb.y <= 0) return;  // minimised
+
+    // The drawing, exactly as `kappa render` draws it, then copied into the
+    // window right of the panel.
+    const Area area = drawing_area();
+    if (!scene_.matches(area.pixels.x, area.pixels.y, 0))
+        scene_ = render::Framebuffer({area.pixels.x, area.pixels.y, 0, GL_RGBA8, false});
+    renderer_->render(camera(), state_.settings, {scene_.id(), area.pixels.x, area.pixels.y});
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb.x, fb.y);
+    glClearColor(0.1f, 0.1f, 0.1f, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_.id());
+    const int x0 = fb.x - area.pixels.x;
+    glBlitFramebuffer(0, 0, area.pixels.x, area.pixels.y, x0, 0, fb.x, area.pixels.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+
+    // The UI on top.
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    PanelInfo info;
+    info.model = model_ ? &*model_ : nullptr;
+    info.map_range = renderer_->mesh() ? renderer_->mesh()->map_range(state_.settings.colormap) : 1.0f;
+    info.upload_s = upload_s_;
+    info.first_frame_s = first_frame_s_;
+    info.computing = compute_.busy();
+    info.progress = compute_.progress();
+    info.stage = compute_.stage();
+    info.frame_ms = median(frame_ms_);
+    info.gl = window_->description();
+    const float scale = window_->content_scale();
+    if (panel_.visible) handle_panel(draw_panel(state_, panel_, info, scale));
+    draw_help_window(&panel_.help, scale);
+    draw_progress_overlay(info, scale);
+    ImGui::Render();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb.x, fb.y);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    if (pending_screenshot_) {
+        save_screenshot(pending_screenshot_->value, pending_screenshot_->flag);
+        pending_screenshot_.reset();
+    }
+    if (model_ && !first_frame_drawn_) {
+        glFinish();
+        first_frame_drawn_ = true;
+        first_frame_s_ = float(seconds_since(options_.start));
+        std::printf("%s: %zu vertices, %zu faces; first frame at %.3f s (load %.3f s, curvature %.3f s, "
+                    "upload %.3f s)\n",
+                    model_->path.empty() ? "built-in model" : model_->path.c_str(), model_->mesh->vertex_count(),
+                    model_->mesh->face_count(), first_frame_s_, model_->load_s, model_->fields_s, upload_s_);
+        std::fflush(stdout);
+    }
+    window_->swap_buffers();
+
+    frame_ms_.push_back(float(seconds_since(t_begin) * 1000.0));
+    if (frame_ms_.size() > 31) frame_ms_.pop_front();
+}
+
+}  // namespace kappa::viewer

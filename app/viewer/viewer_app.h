@@ -1,0 +1,113 @@
+// The interactive viewer behind `kappa view`: a GLFW window drawn by the same
+// kappa::render::Renderer and RenderSettings as `kappa render`, a Dear ImGui
+// panel, a trackball camera, curvature computed on a worker thread, and
+// scripted runs (synthetic input, screenshots) for tests.
+//
+// Sources: viewer_app.cpp (window, frame loop, drawing), viewer_input.cpp
+// (mouse, keys, shortcuts, file actions), viewer_script.cpp (scripted runs).
+#pragma once
+
+#include "app/viewer/background_compute.h"
+#include "app/viewer/input_script.h"
+#include "app/viewer/shortcuts.h"
+#include "app/viewer/ui_panel.h"
+#include "app/viewer/view_state.h"
+#include "render/orbit_camera.h"
+#include "render/renderer.h"
+#include "render/window_context.h"
+
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kappa::viewer {
+
+struct ViewerOptions {
+    std::string mesh_path;          // "" = the built-in model
+    glm::ivec2 size{1280, 800};     // window size
+    std::string xf_path;            // initial view (.xf), else framing from +z
+    ViewState state;                // initial settings
+    bool show_panel = true;
+    // Scripted runs: the steps of --script, then `frames` frames and a
+    // screenshot of the whole window to `screenshot`, then exit.
+    std::vector<ScriptStep> script;
+    int frames = 0;
+    std::string screenshot;
+    bool scripted() const { return frames > 0 || !script.empty(); }
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+};
+
+class ViewerApp {
+public:
+    explicit ViewerApp(ViewerOptions options);
+    ~ViewerApp();
+    // Opens the window and runs until it is closed (or the script ends).
+    // Returns the exit status; throws render::ContextError without a display.
+    int run();
+
+private:
+    friend struct ViewerCallbacks;  // GLFW callbacks (viewer_input.cpp)
+
+    // viewer_app.cpp
+    void open_window();
+    void wait_for_events();
+    void draw_frame();
+    void adopt_results();
+    // The drawing sits right of the panel: its left edge and size in window
+    // coordinates (as the cursor), and its size in framebuffer pixels.
+    struct Area {
+        glm::vec2 origin{0}, size{1};
+        glm::ivec2 pixels{1};
+    };
+    Area drawing_area() const;
+    render::Camera camera() const;  // the view of the drawing area
+
+    // viewer_input.cpp
+    void install_callbacks();
+    void mouse_button(int button, bool pressed, glm::vec2 at);
+    void cursor_moved(glm::vec2 at);
+    void scrolled(float clicks, glm::vec2 at);
+    void apply(Action action);
+    void open_mesh(const std::string& path);
+    void save_screenshot(const std::string& path, bool with_panel);
+    void save_view(const std::string& path);
+    void load_view(const std::string& path);
+    void report(const std::string& message, bool error = false);
+    void handle_panel(const PanelRequests& requests);
+
+    // viewer_script.cpp: advances the script by one frame; false when done.
+    bool script_step();
+
+    ViewerOptions options_;
+    ViewState state_;
+    PanelState panel_;
+    std::unique_ptr<render::WindowContext> window_;
+    std::unique_ptr<render::Renderer> renderer_;
+    render::Framebuffer scene_;  // the drawing, copied into the window right of the panel
+    BackgroundCompute compute_;
+    std::optional<Model> model_;
+    render::OrbitCamera orbit_;
+    bool have_view_ = false;  // the camera was set (a view file): keep it when the mesh arrives
+
+    // Mouse drag in progress: GLFW button number, or -1.
+    int drag_button_ = -1;
+    glm::vec2 last_cursor_{0};
+    int redraw_frames_ = 2;  // frames still to draw before waiting for events
+
+    // Timing.
+    std::deque<float> frame_ms_;
+    float upload_s_ = 0, first_frame_s_ = 0;
+    bool first_frame_drawn_ = false;
+
+    // Scripted runs.
+    size_t step_ = 0;
+    int frames_left_ = 0;  // of the current `frames` step
+    bool final_frames_started_ = false;
+    std::optional<ScriptStep> pending_screenshot_;  // taken at the end of the next frame
+    int exit_status_ = 0;
+};
+
+}  // namespace kappa::viewer

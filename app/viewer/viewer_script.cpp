@@ -1,0 +1,73 @@
+// Scripted runs of the viewer: the steps of --script (input_script.h), then
+// --frames N frames and the --screenshot, one call per frame.
+#include "app/viewer/viewer_app.h"
+
+#include <glm/common.hpp>
+
+namespace kappa::viewer {
+
+namespace {
+
+bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b) {
+    return a.normals == b.normals && a.curvature == b.curvature && a.dcurv == b.dcurv;
+}
+
+}  // namespace
+
+bool ViewerApp::script_step() {
+    if (exit_status_ != 0) return false;  // an error already ended the run
+    if (!model_) return true;             // the first mesh is still loading: draw its progress
+    const auto& steps = options_.script;
+    while (step_ < steps.size()) {
+        const ScriptStep& s = steps[step_];
+        switch (s.kind) {
+        case ScriptStep::Frames:
+            if (frames_left_ == 0) frames_left_ = s.count;
+            if (--frames_left_ == 0) ++step_;
+            return true;
+        case ScriptStep::WaitCompute:
+            if (compute_.busy()) return true;
+            break;
+        case ScriptStep::Drag:
+            // The same handlers as real mouse events, in `count` moves.
+            mouse_button(s.button, true, s.from);
+            for (int i = 1; i <= s.count; ++i) cursor_moved(glm::mix(s.from, s.to, float(i) / float(s.count)));
+            mouse_button(s.button, false, s.to);
+            break;
+        case ScriptStep::Scroll: scrolled(s.amount, s.from); break;
+        case ScriptStep::Key: apply(find_shortcut(s.name)->action); break;
+        case ScriptStep::Set: {
+            const SmoothingOptions before = state_.smoothing;
+            if (auto error = assign_setting(state_, s.name, s.value)) report(*error, true);
+            if (!same_smoothing(before, state_.smoothing)) compute_.recompute(*model_, state_.smoothing);
+            break;
+        }
+        case ScriptStep::Panel: panel_.visible = s.flag; break;
+        case ScriptStep::Screenshot:
+            pending_screenshot_ = s;  // taken at the end of this frame
+            ++step_;
+            return true;
+        case ScriptStep::SaveView: save_view(s.value); break;
+        case ScriptStep::LoadView: load_view(s.value); break;
+        case ScriptStep::Open: open_mesh(s.value); break;
+        }
+        ++step_;
+        if (exit_status_ != 0) return false;
+    }
+    // After the script: --frames N, the last one saved to --screenshot.
+    if (!final_frames_started_) {
+        final_frames_started_ = true;
+        frames_left_ = options_.frames;
+    }
+    if (frames_left_ <= 0) return false;
+    if (--frames_left_ == 0 && !options_.screenshot.empty()) {
+        ScriptStep shot;
+        shot.kind = ScriptStep::Screenshot;
+        shot.value = options_.screenshot;
+        shot.flag = true;
+        pending_screenshot_ = shot;
+    }
+    return true;
+}
+
+}  // namespace kappa::viewer
