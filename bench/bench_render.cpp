@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -27,20 +28,34 @@ struct Config {
     render::RenderSettings settings;
 };
 
-double median_frame_ms(render::Renderer& renderer, const render::Camera& camera, const render::RenderSettings& s,
-                       const render::Framebuffer& target, int frames) {
+struct FrameTime {
+    double wall_ms, cpu_ms;  // medians; CPU time of the whole process (llvmpipe's threads included)
+};
+
+// Process CPU time: less disturbed than wall time when other jobs share the machine.
+double cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
+FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& camera, const render::RenderSettings& s,
+                          const render::Framebuffer& target, int frames) {
     const int w = target.spec().width, h = target.spec().height;
     renderer.render(camera, s, {target.id(), w, h});  // warm-up: shader compilation, buffer allocation
     glFinish();
-    std::vector<double> ms;
+    std::vector<double> wall, cpu;
     for (int i = 0; i < frames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
+        const double c0 = cpu_ms();
         renderer.render(camera, s, {target.id(), w, h});
         glFinish();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        cpu.push_back(cpu_ms() - c0);
+        wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
-    std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
+    std::sort(wall.begin(), wall.end());
+    std::sort(cpu.begin(), cpu.end());
+    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
 }
 
 }  // namespace
@@ -92,12 +107,13 @@ int main(int argc, char** argv) {
         std::printf("\n%s: %zu vertices, %zu faces\n", path.empty() ? "built-in model" : path.c_str(),
                     mesh.vertex_count(), mesh.face_count());
         for (const auto* set : {&configs, &with_msaa}) {
-            double base = 0;
+            FrameTime base{};
             for (const auto& c : *set) {
-                const double ms = median_frame_ms(renderer, camera, c.settings, target, frames);
-                if (&c == &set->front()) base = ms;
-                std::printf("  %-40s %s  %8.2f ms  (%+.0f%%)\n", c.name, c.settings.msaa ? "msaa 4x" : "no msaa",
-                            ms, 100.0 * (ms / base - 1.0));
+                const FrameTime t = median_frame_ms(renderer, camera, c.settings, target, frames);
+                if (&c == &set->front()) base = t;
+                std::printf("  %-38s %s  wall %8.2f ms (%+4.0f%%)  cpu %8.2f ms (%+4.0f%%)\n", c.name,
+                            c.settings.msaa ? "msaa 4x" : "no msaa", t.wall_ms, 100.0 * (t.wall_ms / base.wall_ms - 1.0),
+                            t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0));
             }
         }
     }

@@ -10,9 +10,9 @@ namespace kappa::render {
 
 namespace {
 
-std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files) {
+std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files, std::string defines = {}) {
     return {{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "view_dependent.glsl", "lines_vert.glsl"}},
-            {GL_GEOMETRY_SHADER, std::move(geometry_files)},
+            {GL_GEOMETRY_SHADER, std::move(geometry_files), std::move(defines)},
             {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}};
 }
 
@@ -20,6 +20,8 @@ std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files) {
 
 LineRenderer::LineRenderer()
     : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl", "hatch_strokes.glsl"})),
+      isolines_hatching_(
+          line_program({"line_quad.glsl", "isolines_geom.glsl", "hatch_strokes.glsl"}, "#define KAPPA_HATCHING\n")),
       boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})) {}
 
 void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
@@ -50,14 +52,15 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
 
     // Contours, suggestive contours and hatching strokes: one pass over the triangles.
     if (s.lines.contours || s.lines.suggestive || s.hatching != Hatching::None) {
-        set_common(isolines_, mesh, frame, s);
-        isolines_.set("u_hatch_spacing", s.hatch_spacing);
-        isolines_.set("u_stroke_length", s.hatch_stroke_length);
-        isolines_.set("u_stroke_width", s.hatch_stroke_width);
-        isolines_.set("u_contours", int(s.lines.contours));
-        isolines_.set("u_suggestive", int(s.lines.suggestive));
-        isolines_.set("u_sc_threshold", s.sc_threshold);
-        isolines_.set("u_fade", int(s.fade));
+        ShaderProgram& p = s.hatching != Hatching::None ? isolines_hatching_ : isolines_;
+        set_common(p, mesh, frame, s);
+        p.set("u_hatch_spacing", s.hatch_spacing);
+        p.set("u_stroke_length", s.hatch_stroke_length);
+        p.set("u_stroke_width", s.hatch_stroke_width);
+        p.set("u_contours", int(s.lines.contours));
+        p.set("u_suggestive", int(s.lines.suggestive));
+        p.set("u_sc_threshold", s.sc_threshold);
+        p.set("u_fade", int(s.fade));
         mesh.draw_triangles();
     }
     if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {

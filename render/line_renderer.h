@@ -21,7 +21,7 @@ public:
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                     const RenderSettings& settings);
-    ShaderProgram isolines_, boundaries_;
+    ShaderProgram isolines_, isolines_hatching_, boundaries_;
 };
 
 }  // namespace kappa::render

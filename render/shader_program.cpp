@@ -29,7 +29,7 @@ std::string join_names(const std::vector<std::string>& files) {
 GLuint compile(const ShaderStage& stage) {
     // "#line 1 N" makes GL logs report "N:line" with N = index of the file
     // (0 is the version line): the error message lists the files in order.
-    std::vector<std::string> parts{"#version 330 core\n"};
+    std::vector<std::string> parts{"#version 330 core\n" + stage.defines};
     for (size_t i = 0; i < stage.files.size(); ++i)
         parts.push_back("#line 1 " + std::to_string(i + 1) + "\n" + shader_text(stage.files[i]) + "\n");
     std::vector<const char*> ptrs;

@@ -21,6 +21,7 @@ namespace kappa::render {
 struct ShaderStage {
     GLenum type;                     // GL_VERTEX_SHADER, GL_GEOMETRY_SHADER, GL_FRAGMENT_SHADER
     std::vector<std::string> files;  // embedded file names, concatenated in order
+    std::string defines = {};        // lines inserted after #version, e.g. "#define KAPPA_HATCHING\n"
 };
 
 class ShaderProgram {
