@@ -21,10 +21,9 @@ glm::vec3 pixel_ray(glm::vec2 pixel, glm::vec2 viewport) {
     return glm::normalize(glm::vec3(x, y, -1));
 }
 
-// Gram-Schmidt on the rotation part, keeping the matrix's uniform scale, so
-// that thousands of small rotations do not accumulate shear.
-glm::mat4 reorthonormalize(const glm::mat4& m) {
-    const float scale = glm::length(glm::vec3(m[0]));
+// Gram-Schmidt on the rotation part, restoring the matrix's uniform scale, so
+// that thousands of small rotations accumulate neither shear nor growth.
+glm::mat4 reorthonormalize(const glm::mat4& m, float scale) {
     glm::vec3 x = glm::normalize(glm::vec3(m[0]));
     glm::vec3 y = glm::vec3(m[1]);
     y = glm::normalize(y - glm::dot(y, x) * x);
@@ -41,6 +40,7 @@ glm::mat4 reorthonormalize(const glm::mat4& m) {
 void OrbitCamera::reset(const BoundingSphere& bounds, glm::vec2 viewport) {
     view_ = Camera::framing(bounds, rtsc_fov_y_deg(int(viewport.x), int(viewport.y)), viewport.x / viewport.y).view;
     pivot_ = bounds.center;
+    scale_ = 1;
 }
 
 void OrbitCamera::fit(const BoundingSphere& bounds, glm::vec2 viewport) {
@@ -48,10 +48,16 @@ void OrbitCamera::fit(const BoundingSphere& bounds, glm::vec2 viewport) {
     const float half_x = std::atan(std::tan(half_y) * viewport.x / viewport.y);
     const float distance = bounds.radius / std::sin(std::min(half_x, half_y));
     // Keep the orientation (without scale), put the centre straight ahead.
-    const glm::mat4 rotation = reorthonormalize(glm::mat4(glm::mat3(view_) / glm::length(glm::vec3(view_[0]))));
+    const glm::mat4 rotation = reorthonormalize(glm::mat4(glm::mat3(view_)), 1.0f);
     view_ = glm::translate(glm::mat4(1), glm::vec3(0, 0, -distance)) * rotation *
             glm::translate(glm::mat4(1), -bounds.center);
     pivot_ = bounds.center;
+    scale_ = 1;
+}
+
+void OrbitCamera::set_view(const glm::mat4& view) {
+    view_ = view;
+    scale_ = glm::length(glm::vec3(view[0]));
 }
 
 glm::vec3 OrbitCamera::arcball_point(glm::vec2 pixel, glm::vec2 viewport) {
@@ -78,7 +84,7 @@ void OrbitCamera::orbit(glm::vec2 from, glm::vec2 to, glm::vec2 viewport) {
     const glm::mat4 turn = glm::translate(glm::mat4(1), center) * glm::rotate(glm::mat4(1), angle, axis / sin_angle) *
                            glm::translate(glm::mat4(1), -center);
     apply_in_camera(turn);
-    view_ = reorthonormalize(view_);
+    view_ = reorthonormalize(view_, scale_);
 }
 
 void OrbitCamera::pan(glm::vec2 from, glm::vec2 to, glm::vec2 viewport) {

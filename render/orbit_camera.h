@@ -24,7 +24,7 @@ public:
     // Frames `bounds` again from the current viewing direction.
     void fit(const BoundingSphere& bounds, glm::vec2 viewport);
     // Continues from a given model-view matrix (e.g. a .xf file).
-    void set_view(const glm::mat4& view) { view_ = view; }
+    void set_view(const glm::mat4& view);
     // The point orbits turn about (model coordinates).
     void set_pivot(glm::vec3 pivot) { pivot_ = pivot; }
 
@@ -55,6 +55,7 @@ private:
 
     glm::mat4 view_{1};
     glm::vec3 pivot_{0};  // model coordinates
+    float scale_ = 1;     // uniform scale of the model-view (1 unless a .xf file had one)
 };
 
 }  // namespace kappa::render

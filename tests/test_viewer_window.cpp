@@ -1,0 +1,198 @@
+// `kappa view` in a real window under Xvfb (xvfb-run -a), driven by a
+// --script: the panel is drawn, the model is in the drawing area, an orbit
+// changes the image, toggling contours off removes the line pixels, and a
+// saved .xf view renders the same with `kappa render --xf`. Also the
+// one-line error without a display.
+#include <catch2/catch.hpp>
+
+#include "test_support.h"
+
+#include "render/image.h"
+#include "render/png_writer.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+using namespace kappa;
+
+namespace {
+
+// Window 800x500; the panel is 330 wide, so the drawing area is 470x500.
+constexpr int kWidth = 800, kHeight = 500, kPanel = 330;
+
+std::string xvfb(const std::string& args) {
+    return "xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(KAPPA_EXE) + " view " + args;
+}
+
+// xvfb-run -a may race with another Xvfb starting at the same moment: retry once.
+test::CommandResult run_viewer(const std::string& args) {
+    auto r = test::run_command(xvfb(args));
+    if (r.exit_code != 0 && r.output.find("Xvfb failed") != std::string::npos) r = test::run_command(xvfb(args));
+    return r;
+}
+
+bool is_dark(const render::Rgba& p) { return p.r < 90 && p.g < 90 && p.b < 90; }
+// ImGui's accent blue (headers, check marks, slider grabs) over its dark panel.
+bool is_panel_blue(const render::Rgba& p) { return p.b > p.r + 40 && p.b > 70; }
+
+size_t count(const render::Image& im, int x0, int y0, int x1, int y1, bool (*pred)(const render::Rgba&)) {
+    size_t n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) n += pred(im.at(x, y));
+    return n;
+}
+
+// Mean absolute difference per channel (0..255) over a region of two images.
+double mean_difference(const render::Image& a, int ax, const render::Image& b, int bx, int w, int h) {
+    double sum = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const auto p = a.at(ax + x, y), q = b.at(bx + x, y);
+            sum += std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b);
+        }
+    return sum / (3.0 * w * h);
+}
+
+// One scripted run shared by the test cases (llvmpipe on 2 cores: keep it to one).
+struct ScriptedRun {
+    std::string dir;
+    test::CommandResult result;
+    ScriptedRun() : dir(test::temp_dir()) {
+        test::write_file(dir + "/steps.txt",
+                         "frames 2\n"
+                         "screenshot " + dir + "/start.png\n"
+                         "screenshot " + dir + "/start-drawing.png no-panel\n"
+                         "drag 565 250 700 230 left 6\n"
+                         "frames 1\n"
+                         "screenshot " + dir + "/orbited.png no-panel\n"
+                         "save-view " + dir + "/orbited.xf\n"
+                         "set shading none\n"
+                         "set lines contours\n"
+                         "frames 1\n"
+                         "screenshot " + dir + "/contours.png no-panel\n"
+                         "key C\n"
+                         "frames 1\n"
+                         "screenshot " + dir + "/no-lines.png no-panel\n"
+                         "key C\n"
+                         "screenshot " + dir + "/window-lines.png\n");
+        result = run_viewer("--size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script " +
+                            dir + "/steps.txt");
+    }
+    render::Image image(const std::string& name) const { return render::read_png(dir + "/" + name); }
+};
+
+const ScriptedRun& scripted_run() {
+    static const ScriptedRun run;
+    return run;
+}
+
+}  // namespace
+
+TEST_CASE("without a display, kappa view says to use kappa render in one line", "[viewer][window]") {
+    const auto r = test::run_command("env -u DISPLAY " + std::string(KAPPA_EXE) + " view");
+    CHECK(r.exit_code == 1);
+    CHECK(r.output.find("no display") != std::string::npos);
+    CHECK(r.output.find("kappa render") != std::string::npos);
+    CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+    // A display that cannot be opened: the same kind of message.
+    const auto bad = test::run_command("DISPLAY=:4242 " + std::string(KAPPA_EXE) + " view");
+    CHECK(bad.exit_code == 1);
+    CHECK(bad.output.find("kappa render") != std::string::npos);
+}
+
+TEST_CASE("--frames N --screenshot saves the whole window: panel at the left, model in the drawing area",
+          "[viewer][window]") {
+    const std::string dir = test::temp_dir();
+    const auto r = run_viewer("--size 800x500 --frames 2 --screenshot " + dir + "/shot.png");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("first frame at") != std::string::npos);
+    const render::Image im = render::read_png(dir + "/shot.png");
+    REQUIRE(im.width == kWidth);
+    REQUIRE(im.height == kHeight);
+    // The panel: mostly dark, with ImGui's accent blue in its headers and check boxes.
+    const size_t panel_px = size_t(kPanel - 20) * 300;
+    CHECK(count(im, 10, 0, kPanel - 10, 300, is_dark) > panel_px / 2);
+    CHECK(count(im, 10, 0, kPanel - 10, 300, is_panel_blue) > 1000);
+    // The model: shaded (grey, not the white background) at the drawing area's centre,
+    // white background near its corners.
+    const int cx = kPanel + (kWidth - kPanel) / 2, cy = kHeight / 2;
+    const auto centre = im.at(cx, cy);
+    CHECK(centre.r < 250);
+    CHECK(centre.r > 60);
+    CHECK(im.at(kWidth - 3, 3).r == 255);
+    CHECK(count(im, kPanel, 0, kWidth, kHeight, is_panel_blue) == 0);
+}
+
+TEST_CASE("a scripted orbit changes the drawing", "[viewer][window]") {
+    const ScriptedRun& run = scripted_run();
+    INFO(run.result.output);
+    REQUIRE(run.result.exit_code == 0);
+    const render::Image before = run.image("start-drawing.png"), after = run.image("orbited.png");
+    REQUIRE(before.width == kWidth - kPanel);
+    REQUIRE(after.width == before.width);
+    CHECK(mean_difference(before, 0, after, 0, before.width, before.height) > 3.0);
+}
+
+TEST_CASE("the drawing without the panel is the window's drawing area", "[viewer][window]") {
+    const ScriptedRun& run = scripted_run();
+    INFO(run.result.output);
+    REQUIRE(run.result.exit_code == 0);
+    const render::Image window = run.image("start.png"), drawing = run.image("start-drawing.png");
+    CHECK(mean_difference(window, kPanel, drawing, 0, drawing.width, drawing.height) < 1.0);
+}
+
+TEST_CASE("toggling contours off with the C key removes the line pixels", "[viewer][window]") {
+    const ScriptedRun& run = scripted_run();
+    INFO(run.result.output);
+    REQUIRE(run.result.exit_code == 0);
+    // --shading none: a white surface, so dark pixels are lines.
+    const render::Image lines = run.image("contours.png"), none = run.image("no-lines.png");
+    const size_t with = count(lines, 0, 0, lines.width, lines.height, is_dark);
+    const size_t without = count(none, 0, 0, none.width, none.height, is_dark);
+    CHECK(with > 500);  // the silhouette, ~2 px wide
+    CHECK(without < with / 50);
+    // Pressing C again brings them back (the whole window this time, panel included).
+    const render::Image back = run.image("window-lines.png");
+    CHECK(count(back, kPanel, 0, kWidth, kHeight, is_dark) > with * 9 / 10);
+}
+
+TEST_CASE("a view saved as .xf renders the same with kappa render --xf", "[viewer][window][xf]") {
+    const ScriptedRun& run = scripted_run();
+    INFO(run.result.output);
+    REQUIRE(run.result.exit_code == 0);
+    const std::string out = run.dir + "/rendered.png";
+    const auto r = test::run_command(std::string(KAPPA_EXE) + " render -q -o " + out + " --xf " + run.dir +
+                                     "/orbited.xf --size " + std::to_string(kWidth - kPanel) + "x" +
+                                     std::to_string(kHeight));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const render::Image viewer = run.image("orbited.png"), headless = render::read_png(out);
+    REQUIRE(headless.width == viewer.width);
+    REQUIRE(headless.height == viewer.height);
+    CHECK(mean_difference(viewer, 0, headless, 0, viewer.width, viewer.height) < 1.0);
+}
+
+TEST_CASE("script errors name the file and line; the viewer exits 1", "[viewer][window]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/bad.txt", "frames 1\n\ndrag 1 2 three 4\n");
+    const auto r = test::run_command(std::string(KAPPA_EXE) + " view --script " + dir + "/bad.txt");
+    CHECK(r.exit_code == 1);
+    CHECK(r.output.find(dir + "/bad.txt:3:") != std::string::npos);
+    CHECK(r.output.find("'three' is not a number") != std::string::npos);
+    test::write_file(dir + "/bad2.txt", "set shading glossy\n");
+    const auto r2 = test::run_command(std::string(KAPPA_EXE) + " view --script " + dir + "/bad2.txt");
+    CHECK(r2.exit_code == 1);
+    CHECK(r2.output.find("bad2.txt:1: --shading expects one of none, lambert, toon, got 'glossy'") !=
+          std::string::npos);
+}
+
+TEST_CASE("a mesh that cannot be read ends a scripted run with one line naming it", "[viewer][window]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/broken.ply", "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n");
+    const auto r = run_viewer(dir + "/broken.ply --size 320x240 --frames 1");
+    CHECK(r.exit_code == 1);
+    CHECK(r.output.find("kappa view: " + dir + "/broken.ply") != std::string::npos);
+}
