@@ -5,8 +5,8 @@
 //
 //   frames N                       draw N frames
 //   drag X0 Y0 X1 Y1 [left|right|middle] [STEPS]
-//                                  press, move in STEPS moves (default 8), release:
-//                                  left orbits, right or middle pans
+//                                  press, move in STEPS moves (default 8), one a
+//                                  frame, release: left orbits, right or middle pans
 //   scroll X Y CLICKS              mouse wheel at (X, Y): > 0 zooms in
 //   key NAME                       a shortcut from the help window: C, Tab, Ctrl+S, ?
 //   set NAME VALUE                 a `kappa render` option without dashes:

@@ -137,6 +137,8 @@ PanelRequests draw_panel(ViewState& state, PanelState& panel, const PanelInfo& i
     r.reset = ImGui::Button("Reset (R)");
     ImGui::SameLine();
     if (ImGui::Button("Help (F1)")) panel.help = !panel.help;
+    ImGui::Checkbox("fast while moving", &panel.fast_while_moving);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("no multisampling while dragging when frames take over 33 ms");
     lines_section(state.settings);
     surface_section(state.settings, info.map_range);
     r.recompute = smoothing_section(state.smoothing, info.model, info.computing, info.progress, info.stage);

@@ -18,6 +18,7 @@ struct PanelState {
     std::string open_path;
     std::string screenshot_path = "kappa-view.png";
     bool screenshot_with_panel = true;
+    bool fast_while_moving = true;  // no MSAA while dragging when frames are slow
     std::string view_path = "kappa-view.xf";
     std::string message;  // the outcome of the last action ("wrote ...", an error)
 };

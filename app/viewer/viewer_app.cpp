@@ -22,7 +22,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-float median(std::deque<float> v) {
+template <typename Container>
+float median(Container v) {
     if (v.empty()) return 0;
     std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
     return v[v.size() / 2];
@@ -90,6 +91,9 @@ int ViewerApp::run() {
         if (options_.scripted() && !script_step()) break;
         draw_frame();
     }
+    if (options_.scripted())
+        std::printf("frames: %zu still, median %.1f ms; %zu while dragging, median %.1f ms\n", still_ms_.size(),
+                    median(still_ms_), moving_ms_.size(), median(moving_ms_));
     return exit_status_;
 }
 
@@ -118,6 +122,7 @@ void ViewerApp::adopt_results() {
         return;
     }
     const bool new_mesh = !model_ || model_->mesh != result->model->mesh;
+    if (!new_mesh) result->model->load_s = model_->load_s;  // a recompute read no file
     model_ = std::move(result->model);
     const auto t = std::chrono::steady_clock::now();
     renderer_->set_mesh(*model_->mesh, model_->fields, model_->feature_size);
@@ -143,7 +148,13 @@ void ViewerApp::draw_frame() {
     const Area area = drawing_area();
     if (!scene_.matches(area.pixels.x, area.pixels.y, 0))
         scene_ = render::Framebuffer({area.pixels.x, area.pixels.y, 0, GL_RGBA8, false});
-    renderer_->render(camera(), state_.settings, {scene_.id(), area.pixels.x, area.pixels.y});
+    // While the mouse moves the model and full-quality frames are slow
+    // (software rendering), draw without multisampling; the still image
+    // after the release is full quality again.
+    render::RenderSettings settings = state_.settings;
+    const bool reduced = panel_.fast_while_moving && drag_button_ >= 0 && full_quality_slow_ && settings.msaa;
+    if (reduced) settings.msaa = false;
+    renderer_->render(camera(), settings, {scene_.id(), area.pixels.x, area.pixels.y});
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glViewport(0, 0, fb.x, fb.y);
     glClearColor(0.1f, 0.1f, 0.1f, 1);
@@ -191,8 +202,11 @@ void ViewerApp::draw_frame() {
     }
     window_->swap_buffers();
 
-    frame_ms_.push_back(float(seconds_since(t_begin) * 1000.0));
+    const float ms = float(seconds_since(t_begin) * 1000.0);
+    frame_ms_.push_back(ms);
     if (frame_ms_.size() > 31) frame_ms_.pop_front();
+    if (!reduced && state_.settings.msaa) full_quality_slow_ = ms > 33.0f;
+    if (model_) (drag_button_ >= 0 ? moving_ms_ : still_ms_).push_back(ms);
 }
 
 }  // namespace kappa::viewer

@@ -98,13 +98,16 @@ private:
     int redraw_frames_ = 2;  // frames still to draw before waiting for events
 
     // Timing.
-    std::deque<float> frame_ms_;
+    std::deque<float> frame_ms_;  // the last frames, for the panel
+    std::vector<float> still_ms_, moving_ms_;  // every frame with a model, reported after scripted runs
+    bool full_quality_slow_ = false;  // the last full-quality frame took over 33 ms
     float upload_s_ = 0, first_frame_s_ = 0;
     bool first_frame_drawn_ = false;
 
     // Scripted runs.
     size_t step_ = 0;
     int frames_left_ = 0;  // of the current `frames` step
+    int drag_moves_ = 0;   // of the current `drag` step
     bool final_frames_started_ = false;
     std::optional<ScriptStep> pending_screenshot_;  // taken at the end of the next frame
     int exit_status_ = 0;

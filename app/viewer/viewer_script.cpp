@@ -29,11 +29,15 @@ bool ViewerApp::script_step() {
             if (compute_.busy()) return true;
             break;
         case ScriptStep::Drag:
-            // The same handlers as real mouse events, in `count` moves.
-            mouse_button(s.button, true, s.from);
-            for (int i = 1; i <= s.count; ++i) cursor_moved(glm::mix(s.from, s.to, float(i) / float(s.count)));
+            // The same handlers as real mouse events: press, one move a frame, release.
+            if (drag_moves_ == 0) mouse_button(s.button, true, s.from);
+            ++drag_moves_;
+            cursor_moved(glm::mix(s.from, s.to, float(drag_moves_) / float(s.count)));
+            if (drag_moves_ < s.count) return true;
             mouse_button(s.button, false, s.to);
-            break;
+            drag_moves_ = 0;
+            ++step_;
+            return true;
         case ScriptStep::Scroll: scrolled(s.amount, s.from); break;
         case ScriptStep::Key: apply(find_shortcut(s.name)->action); break;
         case ScriptStep::Set: {
