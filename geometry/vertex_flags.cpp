@@ -3,21 +3,49 @@
 #include "parallel.h"
 
 #include <algorithm>
-#include <utility>
 
 namespace kappa {
+
+namespace {
+
+// Boundary / non-manifold bits from the far ends of the edges at a vertex,
+// one entry per (face, edge) use: an end seen once is a boundary edge, more
+// than twice a non-manifold edge. Small fans (the common case) are counted by
+// direct comparison, large ones by sorting.
+uint8_t edge_use_flags(uint32_t* ends, size_t n) {
+    uint8_t fl = 0;
+    if (n <= 64) {
+        for (size_t a = 0; a < n; ++a) {
+            size_t count = 0;
+            for (size_t b = 0; b < n; ++b) count += ends[b] == ends[a];
+            if (count == 1) fl |= kFlagBoundary;
+            if (count > 2) fl |= kFlagNonManifold;
+        }
+        return fl;
+    }
+    std::sort(ends, ends + n);
+    for (size_t a = 0; a < n;) {
+        size_t b = a;
+        while (b < n && ends[b] == ends[a]) ++b;
+        if (b - a == 1) fl |= kFlagBoundary;
+        if (b - a > 2) fl |= kFlagNonManifold;
+        a = b;
+    }
+    return fl;
+}
+
+}  // namespace
 
 std::vector<uint8_t> compute_vertex_flags(const Mesh& mesh, const VertexFaces& vf,
                                           const std::vector<float>& point_areas) {
     std::vector<uint8_t> flags(mesh.vertex_count(), 0);
     parallel_for_ranges(mesh.vertex_count(), [&](size_t first, size_t last) {
-        std::vector<uint32_t> ends;  // far ends of the edges at v, one entry per face using the edge
+        std::vector<uint32_t> ends;
         for (size_t v = first; v < last; ++v) {
             if (vf.degree(v) == 0) {
                 flags[v] = kFlagIsolated;
                 continue;
             }
-            uint8_t fl = point_areas[v] > 0 ? 0 : kFlagDegenerate;
             ends.clear();
             for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) {
                 const uint32_t c = vf.corners[k];
@@ -27,15 +55,7 @@ std::vector<uint8_t> compute_vertex_flags(const Mesh& mesh, const VertexFaces& v
                     if (w != v) ends.push_back(w);
                 }
             }
-            std::sort(ends.begin(), ends.end());
-            for (size_t a = 0; a < ends.size();) {
-                size_t b = a;
-                while (b < ends.size() && ends[b] == ends[a]) ++b;
-                if (b - a == 1) fl |= kFlagBoundary;
-                if (b - a > 2) fl |= kFlagNonManifold;
-                a = b;
-            }
-            flags[v] = fl;
+            flags[v] = (point_areas[v] > 0 ? 0 : kFlagDegenerate) | edge_use_flags(ends.data(), ends.size());
         }
     });
     return flags;
