@@ -102,7 +102,7 @@ TEST_CASE("without a display, kappa view says to use kappa render in one line", 
     CHECK(bad.output.find("kappa render") != std::string::npos);
 }
 
-TEST_CASE("--frames N --screenshot saves the whole window: panel at the left, model in the drawing area",
+TEST_CASE("kappa view --frames N --screenshot saves the whole window: panel at the left, model in the drawing area",
           "[viewer][window]") {
     const std::string dir = test::temp_dir();
     const auto r = run_viewer("--size 800x500 --frames 2 --screenshot " + dir + "/shot.png");
