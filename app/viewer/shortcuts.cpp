@@ -27,7 +27,7 @@ const std::vector<Shortcut>& shortcuts() {
         {GLFW_KEY_TAB, 0, "Tab", Action::TogglePanel, "show/hide the panel"},
         {GLFW_KEY_F1, 0, "F1", Action::ToggleHelp, "this help"},
         {GLFW_KEY_SLASH, GLFW_MOD_SHIFT, "?", Action::ToggleHelp, "this help"},
-        {GLFW_KEY_P, 0, "P", Action::SaveScreenshot, "save a screenshot (path in the File section)"},
+        {GLFW_KEY_P, 0, "P", Action::SaveScreenshot, "save a screenshot (path in the Files section)"},
         {GLFW_KEY_S, GLFW_MOD_CONTROL, "Ctrl+S", Action::SaveView, "save the view to the .xf file"},
         {GLFW_KEY_O, GLFW_MOD_CONTROL, "Ctrl+O", Action::LoadView, "load the view from the .xf file"},
         {GLFW_KEY_Q, GLFW_MOD_CONTROL, "Ctrl+Q", Action::Quit, "quit"},

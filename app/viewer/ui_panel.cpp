@@ -155,7 +155,7 @@ void draw_help_window(bool* open, float ui_scale) {
     if (!*open) return;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(430 * ui_scale, 0), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(440 * ui_scale, 0), ImGuiCond_Appearing);
     if (ImGui::Begin("Help", open, ImGuiWindowFlags_NoCollapse)) {
         ImGui::TextUnformatted("Mouse");
         ImGui::BulletText("left drag: orbit (trackball)");
@@ -165,6 +165,8 @@ void draw_help_window(bool* open, float ui_scale) {
         ImGui::Separator();
         ImGui::TextUnformatted("Keys");
         if (ImGui::BeginTable("keys", 2)) {
+            ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, 60 * ui_scale);
+            ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
             for (const auto& s : shortcuts()) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
