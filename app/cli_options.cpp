@@ -1,5 +1,6 @@
 #include "cli_options.h"
 
+#include "geometry/surface_analysis.h"
 #include "geometry/parallel.h"
 
 #include <algorithm>
@@ -247,6 +248,13 @@ Parser& Parser::threads() {
             return true;
         },
         "an integer in [0, 4096]");
+}
+
+Parser& Parser::smoothing(SmoothingOptions& out) {
+    return number("--smooth-normals", out.normals,
+                  "Gaussian smoothing width (sigma, model units) for normals before curvature; 0 = off", 0)
+        .number("--smooth-curvature", out.curvature, "Gaussian smoothing width for the curvature tensor; 0 = off", 0)
+        .number("--smooth-dcurv", out.dcurv, "Gaussian smoothing width for C; 0 = off", 0);
 }
 
 Parser& Parser::positional(const std::string& name, std::string& out, const std::string& help, bool required) {

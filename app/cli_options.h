@@ -29,6 +29,10 @@
 #include <utility>
 #include <vector>
 
+namespace kappa {
+struct SmoothingOptions;
+}
+
 namespace kappa::cli {
 
 // ---- value parsers: std::nullopt when the text is not a valid value -------
@@ -103,6 +107,9 @@ public:
     // --threads N: worker threads for the computation (0 = all cores); calls
     // kappa::set_thread_count while parsing.
     Parser& threads();
+    // --smooth-normals, --smooth-curvature, --smooth-dcurv: Gaussian widths
+    // (sigma, model units) passed to the curvature engine; 0 = off.
+    Parser& smoothing(SmoothingOptions& out);
 
     // Positional arguments are filled in the order they are declared.
     Parser& positional(const std::string& name, std::string& out, const std::string& help, bool required);

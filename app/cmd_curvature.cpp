@@ -58,11 +58,7 @@ int run_curvature(int argc, char** argv) {
         .text("-o,--output", out_path, "output file: .csv, or .ply (binary unless --format ply-ascii)", "OUT")
         .choice("--format", format, {"csv", "ply", "ply-ascii"},
                 "output format (default: from the output file's extension)")
-        .number("--smooth-normals", smoothing.normals,
-                "Gaussian smoothing width (sigma, model units) for normals before curvature; 0 = off", 0)
-        .number("--smooth-curvature", smoothing.curvature,
-                "Gaussian smoothing width for the curvature tensor; 0 = off", 0)
-        .number("--smooth-dcurv", smoothing.dcurv, "Gaussian smoothing width for C; 0 = off", 0)
+        .smoothing(smoothing)
         .flag("-q,--quiet", quiet, "print nothing but errors")
         .threads()
         .epilog("CSV columns, one row per input vertex in input order:\n"

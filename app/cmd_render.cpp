@@ -113,11 +113,7 @@ int run_render(int argc, char** argv) {
         .option("--msaa", "on|off", "4x multisampling of the surface (default on)", on_off(s.msaa), "on or off")
         .integer("--turntable", turntable, "write N views around the model: OUT-000.png ... (default: one view)",
                  1, 100000)
-        .number("--smooth-normals", smoothing.normals,
-                "Gaussian smoothing width (sigma, model units) for normals before curvature; 0 = off", 0)
-        .number("--smooth-curvature", smoothing.curvature,
-                "Gaussian smoothing width for the curvature tensor; 0 = off", 0)
-        .number("--smooth-dcurv", smoothing.dcurv, "Gaussian smoothing width for C; 0 = off", 0)
+        .smoothing(smoothing)
         .flag("-q,--quiet", quiet, "print nothing but errors")
         .threads()
         .epilog("With --shading none --colormap none the surface is white and only lines are dark.\n"
