@@ -29,10 +29,11 @@ struct Command {
 // One line per subcommand, in the order `kappa --help` lists them.
 const Command kCommands[] = {
     {"view", "open a mesh in an interactive window with a panel for every rendering setting", kappa::app::run_view},
+    {"render", "draw contours, suggestive contours, shading, colour maps, hatching to a PNG (headless)",
+     kappa::app::run_render},
     {"curvature", "estimate normals, curvature and its derivative per vertex; write CSV or PLY",
      kappa::app::run_curvature},
     {"info", "print mesh statistics: counts, bounds, edges, boundaries, components", kappa::app::run_info},
-    {"render", "draw contours, suggestive contours, shading, colour maps, hatching to a PNG (headless)", kappa::app::run_render},
 };
 
 std::vector<std::string> command_names() {
