@@ -1,21 +1,35 @@
-// Global operator new that asks the kernel for transparent huge pages on
-// large blocks (Linux, THP in "madvise" mode as on Debian 12).
+// Global operator new tuned for kappa's few, large, short-lived arrays
+// (Linux, glibc; transparent huge pages in "madvise" mode as on Debian 12).
 //
-// Why: kappa's arrays for a 1M-face mesh are hundreds of MB, and each 4 KiB
-// page costs a fault on first touch; on the machines we measured (VMs)
-// that was ~3 ms per MB, more than the whole curvature computation.
-// madvise(MADV_HUGEPAGE) makes those faults 2 MiB at a time (about 30x
-// faster). Blocks come from malloc as usual, so delete is plain free().
+// Why: on the machines we measured (VMs) every fresh page of memory costs a
+// fault and a zeroing, ~3 ms per MB in 4 KiB pages and still ~1 ms per MB in
+// huge pages: for a 1M-face mesh that was more than the curvature
+// computation itself. So:
+//  - blocks up to 32 MiB come from the heap, never from a fresh mmap, and
+//    freed memory is kept: the temporaries of one stage reuse the pages of
+//    the previous one instead of faulting in new ones;
+//  - large blocks ask for huge pages (madvise MADV_HUGEPAGE), which fault
+//    2 MiB at a time.
+// Blocks come from malloc as usual, so delete is plain free().
+#include <malloc.h>
+#include <sys/mman.h>
+
 #include <cstdint>
 #include <cstdlib>
 #include <new>
-
-#include <sys/mman.h>
 
 namespace {
 
 constexpr size_t kHugePage = size_t(2) << 20;
 constexpr size_t kLargeBlock = size_t(4) << 20;
+
+struct HeapTuning {
+    HeapTuning() {
+        mallopt(M_MMAP_THRESHOLD, 32 << 20);  // the largest value glibc accepts
+        mallopt(M_TRIM_THRESHOLD, 1 << 30);   // keep freed memory for reuse
+        mallopt(M_TOP_PAD, 16 << 20);         // grow the heap in big steps
+    }
+} heap_tuning;
 
 void* allocate(size_t size) {
     if (size == 0) size = 1;
