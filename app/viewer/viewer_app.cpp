@@ -18,6 +18,9 @@ namespace kappa::viewer {
 
 namespace {
 
+// Meshes from this size on get a first frame without MSAA (about half the time in software).
+constexpr size_t kQuickFirstFrameFaces = 500000;
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -124,6 +127,8 @@ void ViewerApp::adopt_results() {
     const bool new_mesh = !model_ || model_->mesh != result->model->mesh;
     if (!new_mesh) result->model->load_s = model_->load_s;  // a recompute read no file
     model_ = std::move(result->model);
+    // A big new mesh shows up at once without multisampling; the frame after is full quality.
+    quick_frame_ = model_->mesh->face_count() >= kQuickFirstFrameFaces;
     const auto t = std::chrono::steady_clock::now();
     renderer_->set_mesh(*model_->mesh, model_->fields, model_->feature_size);
     upload_s_ = float(seconds_since(t));
@@ -152,8 +157,11 @@ void ViewerApp::draw_frame() {
     // (software rendering), draw without multisampling; the still image
     // after the release is full quality again.
     render::RenderSettings settings = state_.settings;
-    const bool reduced = panel_.fast_while_moving && drag_button_ >= 0 && full_quality_slow_ && settings.msaa;
+    const bool reduced =
+        panel_.fast_while_moving && settings.msaa && ((drag_button_ >= 0 && full_quality_slow_) || quick_frame_);
     if (reduced) settings.msaa = false;
+    if (quick_frame_) redraw_frames_ = std::max(redraw_frames_, 1);
+    quick_frame_ = false;
     renderer_->render(camera(), settings, {scene_.id(), area.pixels.x, area.pixels.y});
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glViewport(0, 0, fb.x, fb.y);

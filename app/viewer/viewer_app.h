@@ -101,6 +101,7 @@ private:
     std::deque<float> frame_ms_;  // the last frames, for the panel
     std::vector<float> still_ms_, moving_ms_;  // every frame with a model, reported after scripted runs
     bool full_quality_slow_ = false;  // the last full-quality frame took over 33 ms
+    bool quick_frame_ = false;        // draw the next frame without MSAA (a big mesh just arrived)
     float upload_s_ = 0, first_frame_s_ = 0;
     bool first_frame_drawn_ = false;
 
