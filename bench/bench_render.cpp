@@ -2,7 +2,7 @@
 // median of 20 frames, for plain Lambertian shading and for contours +
 // suggestive contours + hatching, on the default model and bunny-1M.ply.
 //   bench_render [--size WxH] [--frames N] [MESH ...]   (default: built-in model and
-//   ../shared/meshes/bunny-1M.ply)
+//   ../shared/meshes/bunny-1M.ply next to the repository)
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
         else meshes.push_back(argv[i]);
     }
-    if (meshes.empty()) meshes = {"", "../shared/meshes/bunny-1M.ply"};
+    if (meshes.empty()) meshes = {"", std::string(KAPPA_SOURCE_DIR) + "/../shared/meshes/bunny-1M.ply"};
 
     std::unique_ptr<render::HeadlessContext> context;
     try {
