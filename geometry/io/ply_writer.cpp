@@ -29,14 +29,6 @@ std::string ply_header(const Mesh& mesh, bool binary) {
     return h;
 }
 
-template <typename T>
-void append_little_endian(std::string& out, T value) {
-    if (!kHostLittleEndian) value = byte_swapped(value);
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    out.append(bytes, sizeof(T));
-}
-
 // Shortest representation that reads back to the same float.
 void append_number(std::string& out, float value) {
     char buffer[32];
@@ -57,9 +49,14 @@ void write_vertices(OutputFile& file, const Mesh& mesh, const SurfaceFields& fie
     for (size_t i = 0; i < mesh.vertex_count(); ++i) {
         field_row(mesh, fields, i, row);
         uint8_t flags = field_flags(fields, i);
-        if (binary) {
-            for (float v : row) append_little_endian(chunk, v);
-            chunk.push_back(char(flags));
+        if (binary) {  // one append per row: 18 little-endian floats and the flags byte
+            char bytes[sizeof row + 1];
+            for (size_t k = 0; k < kFieldColumnCount; ++k) {
+                const float v = kHostLittleEndian ? row[k] : byte_swapped(row[k]);
+                std::memcpy(bytes + 4 * k, &v, 4);
+            }
+            bytes[sizeof row] = char(flags);
+            chunk.append(bytes, sizeof bytes);
         } else {
             for (float v : row) {
                 append_number(chunk, v);
@@ -80,9 +77,14 @@ void write_faces(OutputFile& file, const Mesh& mesh, bool binary) {
     std::string chunk;
     chunk.reserve(kChunkBytes + 1024);
     for (const Face& f : mesh.faces) {
-        if (binary) {
-            chunk.push_back(char(3));
-            for (int k = 0; k < 3; ++k) append_little_endian(chunk, int32_t(f[k]));
+        if (binary) {  // one append per face: the count and three little-endian indices
+            char bytes[13];
+            bytes[0] = char(3);
+            for (int k = 0; k < 3; ++k) {
+                const int32_t v = kHostLittleEndian ? int32_t(f[k]) : byte_swapped(int32_t(f[k]));
+                std::memcpy(bytes + 1 + 4 * k, &v, 4);
+            }
+            chunk.append(bytes, sizeof bytes);
         } else {
             chunk += "3";
             for (int k = 0; k < 3; ++k) {
