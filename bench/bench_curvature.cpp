@@ -4,6 +4,8 @@
 //   build/bench_curvature [MESH] [--runs N] [--threads N] [--out FILE.ply]
 //
 // Default MESH: ../shared/meshes/bunny-1M.ply next to the repository.
+#include "median.h"
+
 #include "geometry/io/mesh_io.h"
 #include "geometry/parallel.h"
 #include "geometry/surface_analysis.h"
@@ -18,15 +20,11 @@
 
 using namespace kappa;
 
+using kappa::bench::median;
+
 namespace {
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 }  // namespace
 

@@ -3,6 +3,8 @@
 // the 1M-triangle bunny. Prints every run and the median.
 //
 //   bench_io [MESH_DIR] [RUNS]     (default: ../shared/meshes next to the repo, 11 runs)
+#include "median.h"
+
 #include "geometry/io/mesh_io.h"
 
 #include <algorithm>
@@ -16,13 +18,9 @@
 
 using Clock = std::chrono::steady_clock;
 
-namespace {
+using kappa::bench::median;
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+namespace {
 
 // Runs `body` once as a warm-up (printed as "first": for the first mesh of
 // the process this is what a fresh `kappa` run pays, page faults included),

@@ -3,6 +3,8 @@
 // every run and the median.
 //
 //   bench_topology [MESH] [RUNS]   (default: ../shared/meshes/bunny-1M.ply next to the repo, 11 runs)
+#include "median.h"
+
 #include "geometry/default_model.h"
 #include "geometry/edge_table.h"
 #include "geometry/io/mesh_io.h"
@@ -22,13 +24,9 @@
 
 using Clock = std::chrono::steady_clock;
 
-namespace {
+using kappa::bench::median;
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+namespace {
 
 // Runs `body` once untimed (warm-up), then `runs` timed times; prints each
 // wall time, then the medians of wall time and of process CPU time (all

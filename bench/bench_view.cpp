@@ -6,12 +6,16 @@
 //   3. frame time while orbiting bunny-1M.ply as its curvature is
 //      recomputed in the background (a smoothing width changed).
 // Usage: bench_view [RUNS=5] [MESH_DIR=<source>/../shared/meshes]
+#include "median.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
+
+using kappa::bench::median;
 
 namespace {
 
@@ -36,12 +40,6 @@ std::string run(const std::string& command) {
 double number_after(const std::string& text, const std::string& key) {
     const auto at = text.find(key);
     return at == std::string::npos ? -1 : std::atof(text.c_str() + at + key.size());
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return -1;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <vector>
 
 using namespace kappa;
+using kappa::test::count_lines;
 using kappa::test::run_command;
 
 namespace {
@@ -40,12 +41,6 @@ std::vector<std::vector<double>> read_csv_rows(const std::string& path, std::str
         rows.push_back(row);
     }
     return rows;
-}
-
-size_t count_lines(const std::string& text) {
-    size_t n = 0;
-    for (char c : text) n += c == '\n';
-    return n;
 }
 
 }  // namespace

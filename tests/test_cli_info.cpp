@@ -9,17 +9,12 @@
 #include <sstream>
 #include <string>
 
+using kappa::test::count_lines;
 using kappa::test::run_command;
 
 namespace {
 
 const std::string kExe = KAPPA_EXE;
-
-size_t count_lines(const std::string& text) {
-    size_t n = 0;
-    for (char c : text) n += c == '\n';
-    return n;
-}
 
 // "name: value" lines of the output.
 std::map<std::string, std::string> fields(const std::string& output) {

@@ -9,17 +9,12 @@
 #include <string>
 #include <vector>
 
+using kappa::test::count_lines;
 using kappa::test::run_command;
 
 namespace {
 
 const std::string kExe = KAPPA_EXE;
-
-size_t count_lines(const std::string& text) {
-    size_t n = 0;
-    for (char c : text) n += c == '\n';
-    return n;
-}
 
 // Command names listed under "Commands:" in `kappa --help`.
 std::vector<std::string> listed_commands(const std::string& help) {

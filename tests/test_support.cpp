@@ -28,6 +28,12 @@ std::string temp_dir() {
     return dir.string();
 }
 
+size_t count_lines(const std::string& text) {
+    size_t n = 0;
+    for (char c : text) n += c == '\n';
+    return n;
+}
+
 CommandResult run_command(const std::string& command) {
     CommandResult r;
     FILE* pipe = popen((command + " 2>&1").c_str(), "r");

@@ -16,6 +16,9 @@ struct CommandResult {
     std::string output;  // stdout and stderr together
 };
 
+// Number of '\n' in text: how many lines a command printed.
+size_t count_lines(const std::string& text);
+
 // Runs a shell command, capturing its output.
 CommandResult run_command(const std::string& command);
 
