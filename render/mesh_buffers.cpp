@@ -52,6 +52,18 @@ void set_attribute(GLuint location, int components, size_t offset) {
                           reinterpret_cast<const void*>(offset));
 }
 
+// The attribute layout of GpuVertex for the bound VAO and GL_ARRAY_BUFFER
+// (locations as in shaders/mesh_attributes.glsl).
+void set_vertex_attributes() {
+    set_attribute(0, 3, offsetof(GpuVertex, position));
+    set_attribute(1, 3, offsetof(GpuVertex, normal));
+    set_attribute(2, 3, offsetof(GpuVertex, d1));
+    set_attribute(3, 3, offsetof(GpuVertex, d2));
+    set_attribute(4, 2, offsetof(GpuVertex, curv));
+    set_attribute(5, 4, offsetof(GpuVertex, dcurv));
+    set_attribute(6, 1, offsetof(GpuVertex, unreliable));
+}
+
 }  // namespace
 
 MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size)
@@ -75,13 +87,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glGenBuffers(1, &vertex_buffer_);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), GL_STATIC_DRAW);
-    set_attribute(0, 3, offsetof(GpuVertex, position));
-    set_attribute(1, 3, offsetof(GpuVertex, normal));
-    set_attribute(2, 3, offsetof(GpuVertex, d1));
-    set_attribute(3, 3, offsetof(GpuVertex, d2));
-    set_attribute(4, 2, offsetof(GpuVertex, curv));
-    set_attribute(5, 4, offsetof(GpuVertex, dcurv));
-    set_attribute(6, 1, offsetof(GpuVertex, unreliable));
+    set_vertex_attributes();
     glGenBuffers(1, &triangle_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.faces.size() * sizeof(Face)), mesh.faces.data(),
@@ -93,13 +99,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glGenVertexArrays(1, &edge_vao_);
     glBindVertexArray(edge_vao_);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    set_attribute(0, 3, offsetof(GpuVertex, position));
-    set_attribute(1, 3, offsetof(GpuVertex, normal));
-    set_attribute(2, 3, offsetof(GpuVertex, d1));
-    set_attribute(3, 3, offsetof(GpuVertex, d2));
-    set_attribute(4, 2, offsetof(GpuVertex, curv));
-    set_attribute(5, 4, offsetof(GpuVertex, dcurv));
-    set_attribute(6, 1, offsetof(GpuVertex, unreliable));
+    set_vertex_attributes();
     glGenBuffers(1, &edge_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), GL_STATIC_DRAW);
