@@ -35,16 +35,19 @@ void main() {
     // farthest surface depth in the 3x3 pixels around q absorbs the surface
     // slope within a pixel; `tolerance` the gap between the smooth curve and
     // the polygons.
-    ivec2 size = textureSize(u_depth, 0);
-    ivec2 qi = ivec2(floor(q));
-    float farthest = 0.0;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-            farthest = max(farthest, texelFetch(u_depth, clamp(qi + ivec2(dx, dy), ivec2(0), size - 1), 0).r);
+    // The pixel at q alone decides most fragments: the 3x3 maximum is never
+    // nearer, so a line visible against it is visible against the maximum.
     if (f_in.on_surface > 0.0 && texelFetch(u_depth, ivec2(p), 0).r == 1.0) discard;
-    if (farthest < 1.0) {
-        float line_distance = camera_distance(mix(f_in.depth.x, f_in.depth.y, t));
-        if (line_distance > camera_distance(farthest) + f_in.tolerance) discard;
+    ivec2 size = textureSize(u_depth, 0);
+    ivec2 qi = clamp(ivec2(floor(q)), ivec2(0), size - 1);
+    float line_distance = camera_distance(mix(f_in.depth.x, f_in.depth.y, t));
+    float centre = texelFetch(u_depth, qi, 0).r;
+    if (centre < 1.0 && line_distance > camera_distance(centre) + f_in.tolerance) {
+        float farthest = centre;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                farthest = max(farthest, texelFetch(u_depth, clamp(qi + ivec2(dx, dy), ivec2(0), size - 1), 0).r);
+        if (farthest < 1.0 && line_distance > camera_distance(farthest) + f_in.tolerance) discard;
     }
     o_coverage = coverage * mix(f_in.alpha.x, f_in.alpha.y, t);
 }
