@@ -1,7 +1,6 @@
 #include "mesh_topology.h"
 
 #include "union_find.h"
-#include "vertex_flags.h"
 
 #include <algorithm>
 
@@ -136,20 +135,6 @@ Topology analyze_topology(const Mesh& mesh, const EdgeTable& t) {
     topo.euler_characteristic =
         (long long)topo.surface_vertices - (long long)topo.edges + (long long)topo.valid_faces;
     return topo;
-}
-
-void mark_boundary_and_nonmanifold_vertices(const EdgeTable& t, size_t vertex_count, std::vector<uint8_t>& flags) {
-    if (flags.size() < vertex_count) flags.resize(vertex_count, 0);
-    for (size_t e = 0; e < t.size(); ++e) {
-        const uint32_t n = t.face_count(e);
-        const uint8_t bit = n == 1 ? kFlagBoundary : n > 2 ? kFlagNonManifold : 0;
-        flags[t.ends[e].x] |= bit;
-        flags[t.ends[e].y] |= bit;
-    }
-}
-
-void mark_boundary_and_nonmanifold_vertices(const Mesh& mesh, std::vector<uint8_t>& flags) {
-    mark_boundary_and_nonmanifold_vertices(build_edge_table(mesh), mesh.vertex_count(), flags);
 }
 
 }  // namespace kappa

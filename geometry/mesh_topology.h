@@ -64,11 +64,6 @@ struct Components {
 
 Components find_components(const Mesh& mesh);
 
-// ORs kFlagBoundary (vertex of a boundary edge) and kFlagNonManifold (vertex
-// of a non-manifold edge) into flags, first resized to the vertex count
-// (new entries 0, existing bits kept).
-void mark_boundary_and_nonmanifold_vertices(const Mesh& mesh, std::vector<uint8_t>& flags);
-void mark_boundary_and_nonmanifold_vertices(const EdgeTable& edges, size_t vertex_count,
-                                            std::vector<uint8_t>& flags);
+// Per-vertex boundary / non-manifold flags: compute_vertex_flags (vertex_flags.h).
 
 }  // namespace kappa

@@ -8,7 +8,9 @@
 #include "geometry/mesh_stats.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/primitives.h"
+#include "geometry/face_geometry.h"
 #include "geometry/vertex_flags.h"
+#include "geometry/voronoi_areas.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +20,12 @@ using namespace kappa;
 namespace {
 
 Topology topology_of(const Mesh& m) { return analyze_topology(m, build_edge_table(m)); }
+
+// The per-vertex flags the curvature pipeline computes (from one-rings only).
+std::vector<uint8_t> vertex_flags_of(const Mesh& m) {
+    const VertexFaces vf = build_vertex_faces(m);
+    return compute_vertex_flags(m, vf, compute_point_areas(vf, compute_face_geometry(m).corner_areas));
+}
 
 // Appends b to a (indices shifted).
 Mesh merged(Mesh a, const Mesh& b, glm::vec3 offset) {
@@ -98,8 +106,7 @@ TEST_CASE("grid: one boundary loop of 4n edges, chi = 1", "[topology]") {
     CHECK(t.components == 1);
     CHECK(t.euler_characteristic == 1);
 
-    std::vector<uint8_t> flags;
-    mark_boundary_and_nonmanifold_vertices(m, flags);
+    const std::vector<uint8_t> flags = vertex_flags_of(m);
     REQUIRE(flags.size() == m.vertex_count());
     for (size_t v = 0; v < m.vertex_count(); ++v) {
         const glm::vec3 p = m.positions[v];
@@ -109,13 +116,26 @@ TEST_CASE("grid: one boundary loop of 4n edges, chi = 1", "[topology]") {
     }
 }
 
-TEST_CASE("marking vertices keeps existing flag bits", "[topology]") {
-    const Mesh m = make_grid(1.0f, 2);
-    std::vector<uint8_t> flags(m.vertex_count(), kFlagDegenerate);
-    mark_boundary_and_nonmanifold_vertices(m, flags);
-    for (uint8_t f : flags) CHECK((f & kFlagDegenerate));
-    CHECK(!(flags[4] & kFlagBoundary));  // the centre vertex of a 2x2 grid
-    CHECK((flags[0] & kFlagBoundary));
+TEST_CASE("one-ring vertex flags agree with the global edge table", "[topology]") {
+    // Two independent computations: compute_vertex_flags looks at each vertex's fan only, the
+    // edge table counts the faces of every edge. A vertex is boundary (non-manifold) exactly when
+    // it ends an edge used by one face (by three or more).
+    Mesh m = make_grid(1.0f, 6);
+    m.positions.push_back({0.1f, 0.1f, 0.5f});
+    m.faces.push_back({10, 11, uint32_t(m.positions.size() - 1)});  // a fin on an interior edge
+    for (const Mesh& mesh : {m, make_torus(1.0f, 0.3f, 20, 8)}) {
+        const EdgeTable edges = build_edge_table(mesh);
+        std::vector<uint8_t> expected(mesh.vertex_count(), 0);
+        for (size_t e = 0; e < edges.size(); ++e) {
+            const uint32_t n = edges.face_count(e);
+            const uint8_t bit = n == 1 ? kFlagBoundary : n > 2 ? kFlagNonManifold : 0;
+            expected[edges.ends[e].x] |= bit;
+            expected[edges.ends[e].y] |= bit;
+        }
+        const std::vector<uint8_t> flags = vertex_flags_of(mesh);
+        for (size_t v = 0; v < mesh.vertex_count(); ++v)
+            CHECK((flags[v] & (kFlagBoundary | kFlagNonManifold)) == expected[v]);
+    }
 }
 
 TEST_CASE("two disjoint spheres: two components", "[topology]") {
@@ -143,8 +163,7 @@ TEST_CASE("three faces on one edge: one non-manifold edge", "[topology]") {
     CHECK(t.components == 1);
     CHECK(t.euler_characteristic == 5 - 7 + 3);
 
-    std::vector<uint8_t> flags;
-    mark_boundary_and_nonmanifold_vertices(m, flags);
+    const std::vector<uint8_t> flags = vertex_flags_of(m);
     CHECK(flags[0] == (kFlagBoundary | kFlagNonManifold));
     CHECK(flags[1] == (kFlagBoundary | kFlagNonManifold));
     for (int v : {2, 3, 4}) CHECK(flags[v] == kFlagBoundary);
