@@ -2,6 +2,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,10 +21,11 @@ std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files, s
 }  // namespace
 
 LineRenderer::LineRenderer()
-    : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl", "hatch_strokes.glsl"})),
-      isolines_hatching_(
-          line_program({"line_quad.glsl", "isolines_geom.glsl", "hatch_strokes.glsl"}, "#define KAPPA_HATCHING\n")),
-      boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})) {}
+    : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl"})),
+      boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})),
+      hatching_({{GL_VERTEX_SHADER, {"hatch_vert.glsl"}},
+                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "hatch_geom.glsl"}},
+                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {}
 
 void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                               const RenderSettings& s) {
@@ -34,10 +37,36 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
     p.set("u_line_width", s.line_width);
     p.set("u_depth", 0);
     p.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
-    p.set("u_normal_matrix", frame.normal_matrix);
+}
+
+// Hatching strokes grow from surface samples (shaders/hatch_vert.glsl). The
+// most strokes per unit of surface area are wanted where the surface is
+// nearest, faces the camera and is darkest: at depth `near` (no visible
+// point is nearer), cos(theta) = 1 and darkness 1. Samples beyond that
+// count can pass nowhere in the view and are not drawn.
+void LineRenderer::draw_hatching(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
+    const glm::mat4& P = frame.projection;
+    const float near_plane = P[3][2] / (P[2][2] - 1.0f);
+    const double pixels_per_unit = double(P[1][1]) * 0.5 * double(frame.viewport.y);
+    const double strokes_per_area = mesh.surface_area() / (double(s.hatch_spacing) * double(s.hatch_stroke_length));
+    const double most_wanted = std::pow(pixels_per_unit / double(near_plane), 2) * strokes_per_area;
+    const size_t count = size_t(std::min(std::ceil(most_wanted), double(mesh.hatch_sample_count())));
+
+    hatching_.use();
+    hatching_.set("u_mvp", frame.mvp);
+    hatching_.set("u_eye", frame.eye);
+    hatching_.set("u_viewport", frame.viewport);
+    hatching_.set("u_depth", 0);
+    hatching_.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
+    hatching_.set("u_normal_matrix", frame.normal_matrix);
     const float len = glm::length(s.light_dir);
-    p.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
-    p.set("u_hatching", int(s.hatching));
+    hatching_.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
+    hatching_.set("u_pixels_per_unit", float(pixels_per_unit));
+    hatching_.set("u_strokes_per_area", float(strokes_per_area));
+    hatching_.set("u_stroke_length", s.hatch_stroke_length);
+    hatching_.set("u_stroke_width", s.hatch_stroke_width);
+    hatching_.set("u_hatching", int(s.hatching));
+    mesh.draw_hatch_samples(count);
 }
 
 void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
@@ -50,13 +79,10 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
 
-    // Contours, suggestive contours and hatching strokes: one pass over the triangles.
-    if (s.lines.contours || s.lines.suggestive || s.hatching != Hatching::None) {
-        ShaderProgram& p = s.hatching != Hatching::None ? isolines_hatching_ : isolines_;
+    // Contours and suggestive contours: one pass over the triangles.
+    if (s.lines.contours || s.lines.suggestive) {
+        ShaderProgram& p = isolines_;
         set_common(p, mesh, frame, s);
-        p.set("u_hatch_spacing", s.hatch_spacing);
-        p.set("u_stroke_length", s.hatch_stroke_length);
-        p.set("u_stroke_width", s.hatch_stroke_width);
         p.set("u_contours", int(s.lines.contours));
         p.set("u_suggestive", int(s.lines.suggestive));
         p.set("u_sc_threshold", s.sc_threshold);
@@ -67,6 +93,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         set_common(boundaries_, mesh, frame, s);
         mesh.draw_boundary_edges();
     }
+    if (s.hatching != Hatching::None) draw_hatching(mesh, frame, s);
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

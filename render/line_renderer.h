@@ -21,7 +21,8 @@ public:
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                     const RenderSettings& settings);
-    ShaderProgram isolines_, isolines_hatching_, boundaries_;
+    void draw_hatching(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+    ShaderProgram isolines_, boundaries_, hatching_;
 };
 
 }  // namespace kappa::render

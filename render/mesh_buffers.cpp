@@ -1,5 +1,6 @@
 #include "render/mesh_buffers.h"
 
+#include "geometry/surface_samples.h"
 #include "geometry/vertex_flags.h"
 #include "render/colormap.h"
 
@@ -103,19 +104,43 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glGenBuffers(1, &edge_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), GL_STATIC_DRAW);
+
+    // Hatching seeds: position, normal, direction (shaders/hatch_vert.glsl).
+    surface_area_ = kappa::surface_area(mesh);
+    std::vector<glm::vec3> samples;
+    for (const SurfaceSample& p : sample_surface(mesh, fields, kHatchSamples))
+        samples.insert(samples.end(), {p.position, p.normal, p.direction});
+    hatch_samples_ = samples.size() / 3;
+    glGenVertexArrays(1, &sample_vao_);
+    glBindVertexArray(sample_vao_);
+    glGenBuffers(1, &sample_buffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(samples.size() * sizeof(glm::vec3)), samples.data(), GL_STATIC_DRAW);
+    for (GLuint location = 0; location < 3; ++location) {
+        glEnableVertexAttribArray(location);
+        glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(glm::vec3),
+                              reinterpret_cast<const void*>(location * sizeof(glm::vec3)));
+    }
     glBindVertexArray(0);
 }
 
 MeshBuffers::~MeshBuffers() {
-    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, edge_buffer_};
-    glDeleteBuffers(3, buffers);
-    const GLuint arrays[] = {vao_, edge_vao_};
-    glDeleteVertexArrays(2, arrays);
+    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, edge_buffer_, sample_buffer_};
+    glDeleteBuffers(4, buffers);
+    const GLuint arrays[] = {vao_, edge_vao_, sample_vao_};
+    glDeleteVertexArrays(3, arrays);
 }
 
 void MeshBuffers::draw_triangles() const {
     glBindVertexArray(vao_);
     glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);
+}
+
+void MeshBuffers::draw_hatch_samples(size_t count) const {
+    count = std::min(count, hatch_samples_);
+    if (count == 0) return;
+    glBindVertexArray(sample_vao_);
+    glDrawArrays(GL_POINTS, 0, GLsizei(count));
 }
 
 void MeshBuffers::draw_boundary_edges() const {

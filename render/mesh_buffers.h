@@ -1,6 +1,7 @@
 // The mesh and its curvature fields on the GPU, uploaded once: one
 // interleaved vertex buffer (position, normal, d1, d2, k1 k2, C, flags),
-// the triangles, and the open boundary edges. Every view-dependent quantity
+// the triangles, the open boundary edges, and random surface samples that
+// seed hatching strokes (geometry/surface_samples.h). Every view-dependent quantity
 // is computed from these in the shaders, per frame.
 #pragma once
 
@@ -25,10 +26,15 @@ public:
 
     void draw_triangles() const;       // GL_TRIANGLES over every face
     void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
+    void draw_hatch_samples(size_t count) const;  // GL_POINTS over the first `count` surface samples
+
+    static constexpr size_t kHatchSamples = size_t(1) << 18;  // enough for dense hatching at 4x zoom
 
     size_t vertex_count() const { return vertex_count_; }
     size_t face_count() const { return face_count_; }
     size_t boundary_edge_count() const { return boundary_edges_; }
+    size_t hatch_sample_count() const { return hatch_samples_; }
+    double surface_area() const { return surface_area_; }
     float feature_size() const { return feature_size_; }
     const BoundingSphere& bounds() const { return bounds_; }
     // Robust colour-map range (render/colormap.h), computed at upload.
@@ -37,7 +43,9 @@ public:
 private:
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
     GLuint edge_vao_ = 0, edge_buffer_ = 0;
-    size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0;
+    GLuint sample_vao_ = 0, sample_buffer_ = 0;
+    size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0, hatch_samples_ = 0;
+    double surface_area_ = 0;
     float feature_size_ = 1;
     BoundingSphere bounds_;
     std::array<float, 7> ranges_{};

@@ -10,8 +10,6 @@ in LineVertex {
     float sc_strength;
     float unreliable;
     flat int id;
-    vec4 hatch_dirs;
-    float tone;
 } v_in[];
 
 void main() {

@@ -4,16 +4,8 @@
 //   suggestive: kr = 0, kept where Dw kr * fs^2 > threshold and n.v > 0
 //               (front-facing; conventions.md). The segment is clipped where
 //               the test fails inside it, as rtsc does.
-//   hatching:   short strokes (hatch_strokes.glsl), in the same pass so the
-//               mesh is read and transformed once per frame.
-// Compiled twice, with and without KAPPA_HATCHING: a geometry shader's
-// declared output size costs time on every triangle in software renderers.
 layout(triangles) in;
-#ifdef KAPPA_HATCHING
-layout(triangle_strip, max_vertices = 24) out;  // contour, suggestive contour, 4 strokes
-#else
-layout(triangle_strip, max_vertices = 8) out;   // contour, suggestive contour
-#endif
+layout(triangle_strip, max_vertices = 8) out;  // contour, suggestive contour
 
 in LineVertex {
     vec3 position;
@@ -22,17 +14,12 @@ in LineVertex {
     float sc_strength;
     float unreliable;
     flat int id;
-    vec4 hatch_dirs;
-    float tone;
 } v_in[];
 
 uniform int u_contours;
 uniform int u_suggestive;
 uniform float u_sc_threshold;  // dimensionless s
 uniform int u_fade;            // fade suggestive contours whose strength is close to s
-uniform int u_hatching;        // 0 none, 1 min (along d2), 2 max (along d1), 3 cross
-
-void hatch_strokes(float tolerance);  // hatch_strokes.glsl, compiled after this file
 
 // A zero crossing on an edge: the point mix(P[lo], P[hi], s). The edge is
 // always walked from the endpoint with the smaller vertex id, so the two
@@ -123,7 +110,4 @@ void suggestive_segment() {
 void main() {
     if (u_contours != 0) contour_segment();
     if (u_suggestive != 0) suggestive_segment();
-#ifdef KAPPA_HATCHING
-    if (u_hatching != 0) hatch_strokes(triangle_tolerance());
-#endif
 }

@@ -83,3 +83,28 @@ TEST_CASE("hatching strokes follow the principal directions, denser where darker
         CHECK(std::min(d.horizontal, d.vertical) > 0.3 * std::max(d.horizontal, d.vertical));
     }
 }
+
+TEST_CASE("hatching keeps its density on screen when the camera comes closer", "[render][hatching]") {
+    // Strokes grow from surface samples: coming 2.5 times closer must add
+    // samples so that the ink per pixel over the same surface patch stays.
+    const Mesh torus = make_torus(1.0f, 0.4f, 160, 64);
+    const SurfaceFields fields = test::torus_fields(torus, 1.0f, 0.4f);
+    auto s = test::lines_only({false, false, false});
+    s.hatching = render::Hatching::Max;
+    s.light_dir = glm::normalize(glm::vec3(0.85f, 0, 0.53f));
+    const glm::vec3 patch(0.0f, -1.0f, 0.4f);  // top of the tube, mid tone
+    double ink[2];
+    for (int i = 0; i < 2; ++i) {
+        const float distance = i == 0 ? 5.0f : 2.0f;
+        const auto camera = render::Camera::look_at(patch + glm::vec3(0, 0, distance), patch, {0, 1, 0}, 40.0f);
+        const auto image = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
+        test::maybe_save(image, i == 0 ? "torus_hatch_far" : "torus_hatch_near");
+        // The same surface patch, 0.16 x 0.16 model units, at either distance.
+        const int half = int(0.08f / (distance * std::tan(20.0f * 3.14159265f / 180.0f)) * kSize / 2);
+        ink[i] = measure(image, {kSize / 2, kSize / 2}, half).ink;
+    }
+    INFO("ink far " << ink[0] << ", near " << ink[1]);
+    CHECK(ink[0] > 0.02);
+    CHECK(ink[1] > 0.7 * ink[0]);
+    CHECK(ink[1] < 1.4 * ink[0]);
+}
