@@ -1,0 +1,42 @@
+// Faces grouped into small, spatially coherent, connected clusters, for
+// per-cluster culling on the CPU (cluster_bounds.h): the renderer draws or
+// skips whole runs of faces by their cluster.
+//
+// Growth rule: breadth-first over faces that share a VERTEX (not only an
+// edge). The vertex -> faces rows (vertex_faces.h) are a counting sort, so no
+// edge table is needed; vertex rings give the same round, disk-like patches
+// as edge adjacency on a manifold, and faces that touch only at a vertex
+// (bow ties, non-manifold fans, faces with a repeated index) still join their
+// neighbours instead of becoming tiny clusters of their own.
+#pragma once
+
+#include "mesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace kappa {
+
+struct FaceClusters {
+    std::vector<uint32_t> face_order;  // permutation of 0..F-1: the faces cluster by cluster
+    // Size clusters + 1; cluster c is face_order[cluster_start[c] .. cluster_start[c+1]).
+    std::vector<uint32_t> cluster_start;
+    size_t size() const { return cluster_start.empty() ? 0 : cluster_start.size() - 1; }
+};
+
+// Greedy region growing: a cluster starts at a seed face and takes the faces
+// around its vertices ring by ring (breadth-first over vertices, each
+// vertex's faces in increasing face order) until it has max_faces faces or
+// its connected component is used up. The next seed is the first unassigned
+// face met on the frontier of the previous cluster (so consecutive clusters
+// are neighbours), or else the lowest-numbered unassigned face.
+//
+// Input:  mesh (vertex indices must be < vertex_count(); any other defect is
+//         fine: isolated vertices, repeated indices, non-manifold edges),
+//         max_faces >= 1 (0 is treated as 1).
+// Output: every face in exactly one cluster; each cluster has 1..max_faces
+//         faces, all connected through shared vertices. An empty mesh gives
+//         zero clusters (cluster_start = {0}). Deterministic, O(V + F).
+FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces = 256);
+
+}  // namespace kappa
