@@ -85,8 +85,11 @@ int main(int argc, char** argv) {
     lines.lines = {true, true, false};
     render::RenderSettings all = lines;
     all.hatching = render::Hatching::Cross;
+    render::RenderSettings lines_unculled = lines;  // what cluster culling saves
+    lines_unculled.cull_clusters = false;
     std::vector<Config> configs = {{"lambert", plain}, {"lambert+contours+suggestive", lines},
-                                   {"lambert+contours+suggestive+hatching", all}};
+                                   {"lambert+contours+suggestive+hatching", all},
+                                   {"  (contours+suggestive, no culling)", lines_unculled}};
     for (auto& c : configs) c.settings.msaa = false;
     auto with_msaa = configs;
     for (auto& c : with_msaa) c.settings.msaa = true;

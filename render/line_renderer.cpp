@@ -87,7 +87,11 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         p.set("u_suggestive", int(s.lines.suggestive));
         p.set("u_sc_threshold", s.sc_threshold);
         p.set("u_fade", int(s.fade));
-        mesh.draw_triangles();
+        if (s.cull_clusters)
+            mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, s.lines.contours, s.lines.suggestive,
+                                                  s.sc_threshold, 0.5f * s.line_width + 2.0f));
+        else
+            mesh.draw_triangles();
     }
     if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {
         set_common(boundaries_, mesh, frame, s);

@@ -13,6 +13,10 @@ namespace kappa::render {
 
 namespace {
 
+// Faces per culling cluster: small enough for tight normal cones, large
+// enough that a frame has few runs to draw.
+constexpr uint32_t kClusterFaces = 256;
+
 // One vertex as the shaders read it (shaders/mesh_attributes.glsl).
 struct GpuVertex {
     glm::vec3 position, normal, d1, d2;
@@ -89,10 +93,14 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), GL_STATIC_DRAW);
     set_vertex_attributes();
+    // Triangles in cluster order, so the contour pass can draw runs of them.
+    const FaceClusters clusters = cluster_faces(mesh, kClusterFaces);
+    clusters_ = make_mesh_clusters(mesh, fields, clusters, feature_size);
+    std::vector<Face> ordered(mesh.faces.size());
+    for (size_t i = 0; i < ordered.size(); ++i) ordered[i] = mesh.faces[clusters.face_order[i]];
     glGenBuffers(1, &triangle_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.faces.size() * sizeof(Face)), mesh.faces.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
 
     // Boundary edges share the vertex buffer through a second VAO.
     const std::vector<uint32_t> edges = boundary_edges(mesh, fields);
@@ -141,6 +149,18 @@ void MeshBuffers::draw_hatch_samples(size_t count) const {
     if (count == 0) return;
     glBindVertexArray(sample_vao_);
     glDrawArrays(GL_POINTS, 0, GLsizei(count));
+}
+
+void MeshBuffers::draw_triangles(const std::vector<FaceRun>& runs) const {
+    if (runs.empty()) return;
+    std::vector<GLsizei> counts(runs.size());
+    std::vector<const void*> offsets(runs.size());
+    for (size_t i = 0; i < runs.size(); ++i) {
+        counts[i] = GLsizei(runs[i].count * 3);
+        offsets[i] = reinterpret_cast<const void*>(size_t(runs[i].first) * sizeof(Face));
+    }
+    glBindVertexArray(vao_);
+    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(runs.size()));
 }
 
 void MeshBuffers::draw_boundary_edges() const {

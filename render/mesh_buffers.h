@@ -8,6 +8,7 @@
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
+#include "render/cluster_culling.h"
 #include "render/gl.h"
 #include "render/render_settings.h"
 
@@ -25,6 +26,7 @@ public:
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 
     void draw_triangles() const;       // GL_TRIANGLES over every face
+    void draw_triangles(const std::vector<FaceRun>& runs) const;  // the faces of these runs (cluster order)
     void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
     void draw_hatch_samples(size_t count) const;  // GL_POINTS over the first `count` surface samples
 
@@ -37,6 +39,8 @@ public:
     double surface_area() const { return surface_area_; }
     float feature_size() const { return feature_size_; }
     const BoundingSphere& bounds() const { return bounds_; }
+    // The faces are uploaded cluster by cluster (render/cluster_culling.h).
+    const MeshClusters& clusters() const { return clusters_; }
     // Robust colour-map range (render/colormap.h), computed at upload.
     float map_range(ColorMap map) const { return ranges_[size_t(map)]; }
 
@@ -48,6 +52,7 @@ private:
     double surface_area_ = 0;
     float feature_size_ = 1;
     BoundingSphere bounds_;
+    MeshClusters clusters_;
     std::array<float, 7> ranges_{};
 };
 

@@ -41,6 +41,7 @@ struct RenderSettings {
 
     glm::vec4 background{1, 1, 1, 1};  // straight RGBA; alpha 0 = transparent
     bool msaa = true;                  // 4x multisampling of the surface pass
+    bool cull_clusters = true;         // skip clusters that cannot hold a line (same image; off for tests, benchmarks)
 };
 
 // Names as on the command line (conventions.md). parse_* return nullopt for

@@ -1,0 +1,93 @@
+#include "render/cluster_culling.h"
+
+#include "geometry/vertex_flags.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kappa::render {
+
+MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
+                                float feature_size) {
+    MeshClusters out;
+    out.bounds = compute_cluster_bounds(mesh, fields.normals, clusters);
+    out.first_face = clusters.cluster_start;
+    if (out.first_face.empty()) out.first_face = {0};
+    out.may_have_suggestive.assign(clusters.size(), 0);
+    out.max_strength.assign(clusters.size(), 0.0f);
+    const bool has_flags = fields.flags.size() == mesh.vertex_count();
+    const double fs2 = double(feature_size) * double(feature_size);
+    for (size_t c = 0; c < clusters.size(); ++c) {
+        double strength = 0;
+        for (uint32_t i = clusters.cluster_start[c]; i < clusters.cluster_start[c + 1]; ++i) {
+            const Face& f = mesh.faces[clusters.face_order[i]];
+            bool reliable = true, elliptic_up = true, elliptic_down = true;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = f[k];
+                reliable = reliable && !(has_flags && (fields.flags[v] & kFlagUnreliable));
+                elliptic_up = elliptic_up && fields.k2[v] > 0;     // k1 >= k2 > 0: kr > 0
+                elliptic_down = elliptic_down && fields.k1[v] < 0;  // k2 <= k1 < 0: kr < 0
+            }
+            if (!reliable || elliptic_up || elliptic_down) continue;
+            out.may_have_suggestive[c] = 1;
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec4 C(fields.dcurv[f[k]]);
+                strength = std::max(strength, std::sqrt(C.x * C.x + 3 * C.y * C.y + 3 * C.z * C.z + C.w * C.w) * fs2);
+            }
+        }
+        // Float evaluation in the shader: a margin well above its rounding.
+        out.max_strength[c] = float(strength * (1 + 1e-4) + 1e-30);
+    }
+    return out;
+}
+
+namespace {
+
+// The six planes of the clip volume, widened by `margin` (in NDC units) in
+// x and y, as model-space planes a.p + d >= 0 (Gribb and Hartmann 2001).
+struct Frustum {
+    glm::vec4 planes[5];
+
+    Frustum(const glm::mat4& mvp, glm::vec2 margin) {
+        auto row = [&](int i) { return glm::vec4(mvp[0][i], mvp[1][i], mvp[2][i], mvp[3][i]); };
+        const glm::vec4 x = row(0), y = row(1), z = row(2), w = row(3);
+        planes[0] = w * (1 + margin.x) + x;  // x >= -(1 + m) w
+        planes[1] = w * (1 + margin.x) - x;  // x <= (1 + m) w
+        planes[2] = w * (1 + margin.y) + y;
+        planes[3] = w * (1 + margin.y) - y;
+        planes[4] = w + z;  // in front of the near plane
+    }
+    bool may_touch(const ClusterBounds& b) const {
+        for (const glm::vec4& p : planes)
+            if (glm::dot(glm::vec3(p), b.center) + p.w < -b.radius * glm::length(glm::vec3(p))) return false;
+        return true;
+    }
+};
+
+}  // namespace
+
+std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const FrameParams& frame, bool contours,
+                                       bool suggestive, float sc_threshold, float margin_px) {
+    const Frustum frustum(frame.mvp, 2.0f * margin_px / frame.viewport);
+    std::vector<FaceRun> runs;
+    for (size_t c = 0; c < clusters.size(); ++c) {
+        const ClusterBounds& b = clusters.bounds[c];
+        if (!frustum.may_touch(b)) continue;
+        const Facing facing = classify_facing(b, frame.eye);
+        const bool draw = (contours && facing == Facing::Mixed) ||
+                          (suggestive && clusters.may_have_suggestive[c] &&
+                           (facing == Facing::Mixed || (facing == Facing::Front && clusters.max_strength[c] > sc_threshold)));
+        if (!draw) continue;
+        const uint32_t first = clusters.first_face[c], count = clusters.first_face[c + 1] - first;
+        if (!runs.empty() && runs.back().first + runs.back().count == first)
+            runs.back().count += count;
+        else
+            runs.push_back({first, count});
+    }
+    return runs;
+}
+
+}  // namespace kappa::render

@@ -1,0 +1,57 @@
+// Cluster culling for the contour pass: the triangles are uploaded cluster
+// by cluster (geometry/face_clusters.h), and per frame the CPU picks the
+// runs of clusters that can hold a line in this view, so the geometry
+// shader (shaders/isolines_geom.glsl) never runs on the others. A cluster
+// is skipped when
+//   - its bounding sphere lies outside the view (widened by the line width),
+//   - it is entirely back-facing (geometry/cluster_bounds.h): n.v < 0 at
+//     every vertex, so no contour (a sign change of n.v) and no suggestive
+//     contour (drawn only where n.v > 0),
+//   - it is entirely front-facing and cannot hold a suggestive contour:
+//     kr sin^2(theta) = k1 u^2 + k2 t^2 keeps one sign where k1 and k2 do
+//     (elliptic vertices), or every triangle has an unreliable vertex (the
+//     shader skips those), or the test Dw kr fs^2 > s fails at every
+//     vertex whatever the view. Where n.v > 0, Dw kr = C(w,w,w) - 2 tau^2
+//     cot(theta) <= C(w,w,w) <= sqrt(a^2 + 3b^2 + 3c^2 + d^2) for unit w
+//     (Cauchy-Schwarz with (w1^3, sqrt3 w1^2 w2, sqrt3 w1 w2^2, w2^3),
+//     whose length is (w1^2 + w2^2)^(3/2) = 1), and the shader only
+//     interpolates vertex values.
+// The result is exact: the same pixels as drawing every triangle.
+#pragma once
+
+#include "geometry/cluster_bounds.h"
+#include "geometry/face_clusters.h"
+#include "geometry/mesh.h"
+#include "geometry/surface_fields.h"
+#include "render/frame_params.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace kappa::render {
+
+struct MeshClusters {
+    std::vector<ClusterBounds> bounds;
+    std::vector<uint32_t> first_face;  // size clusters + 1, in the uploaded (cluster) order
+    std::vector<uint8_t> may_have_suggestive;
+    std::vector<float> max_strength;  // bound on Dw kr fs^2 over the reliable front-facing vertices, any view
+
+    size_t size() const { return bounds.size(); }
+};
+
+// fields must have one entry per vertex (flags may be empty); feature_size:
+// fs, as given to the shaders.
+MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
+                                float feature_size);
+
+struct FaceRun {
+    uint32_t first, count;  // faces [first, first + count) of the uploaded order
+};
+
+// The runs of faces the contour pass must draw for this frame. margin_px:
+// how far outside the image a line may still cover pixels inside it;
+// sc_threshold: the dimensionless s of the suggestive-contour test.
+std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const FrameParams& frame, bool contours,
+                                       bool suggestive, float sc_threshold, float margin_px);
+
+}  // namespace kappa::render

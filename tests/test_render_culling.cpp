@@ -1,0 +1,85 @@
+// Cluster culling of the contour pass (render/cluster_culling.h) skips work,
+// never lines: the image is the same pixel for pixel with and without it.
+#include <catch2/catch.hpp>
+
+#include "test_render_fixtures.h"
+#include "test_support.h"
+
+#include "geometry/default_model.h"
+#include "geometry/feature_size.h"
+#include "geometry/io/mesh_io.h"
+#include "geometry/primitives.h"
+#include "geometry/surface_analysis.h"
+#include "render/cluster_culling.h"
+#include "render/frame_params.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace kappa;
+
+namespace {
+
+void check_same_with_and_without_culling(const Mesh& mesh, const std::string& name) {
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    const float fs = feature_size(mesh, fields);
+    const auto bounds = render::bounding_sphere(mesh);
+    const float r = bounds.radius;
+    struct View {
+        glm::vec3 eye, target;
+        float fov;
+    };
+    // Around the model, from above, and close up on the right rim with most
+    // of the model outside the image.
+    const glm::vec3 o(0);
+    const View views[] = {{{0, 0, 3 * r}, o, 30.0f},
+                          {{3 * r, 0.5f * r, 0}, o, 30.0f},
+                          {{-2 * r, r, -2 * r}, o, 30.0f},
+                          {{0, 3 * r, 0.1f * r}, o, 30.0f},
+                          {{0.7f * r, 0, 2 * r}, {0.7f * r, 0, 0}, 15.0f}};
+    for (const auto& lines : {render::LineSelection{true, true, false}, render::LineSelection{true, false, false},
+                              render::LineSelection{false, true, false}}) {
+        for (const View& v : views) {
+            const auto camera = render::Camera::look_at(bounds.center + v.eye, bounds.center + v.target, {0, 1, 0}, v.fov);
+            auto s = test::lines_only(lines);
+            // Many suggestive contours; alone, a threshold at which the bound on Dw kr culls too.
+            s.sc_threshold = lines.contours ? 0.02f : 0.3f;
+            s.cull_clusters = false;
+            const auto all = test::render(mesh, fields, fs, camera, s, 320, 240);
+            s.cull_clusters = true;
+            const auto culled = test::render(mesh, fields, fs, camera, s, 320, 240);
+            test::maybe_save(culled, name + "_culled");
+            INFO(name << ", eye " << v.eye.x << "," << v.eye.y << "," << v.eye.z << ", contours " << lines.contours
+                      << ", suggestive " << lines.suggestive);
+            CHECK(test::count_ink(all) > 100);
+            CHECK(culled.pixels == all.pixels);
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("cluster culling gives the same lines as drawing every triangle", "[render][culling]") {
+    SECTION("bunny") { check_same_with_and_without_culling(load_mesh(test::shared_mesh("bunny.ply")), "bunny"); }
+    SECTION("built-in model") { check_same_with_and_without_culling(make_default_model(), "default"); }
+}
+
+TEST_CASE("cluster culling skips most of a sphere's triangles", "[render][culling]") {
+    const Mesh sphere = make_icosphere(1.0f, 6);
+    const SurfaceFields fields = compute_surface_fields(sphere);
+    const render::MeshClusters clusters = render::make_mesh_clusters(sphere, fields, cluster_faces(sphere, 256), 1.0f);
+    const auto bounds = render::bounding_sphere(sphere);
+    const auto camera = render::Camera::look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 40.0f);
+    const auto frame = render::FrameParams::make(camera, bounds, 400, 400);
+    auto drawn = [&](bool contours, bool suggestive) {
+        size_t faces = 0;
+        for (const auto& run : render::contour_pass_runs(clusters, frame, contours, suggestive, 0.05f, 3.0f)) faces += run.count;
+        return double(faces) / double(sphere.face_count());
+    };
+    // A sphere is elliptic everywhere: no suggestive contours, so only the
+    // clusters along the contour (a band around the rim) are drawn.
+    CHECK(drawn(true, true) < 0.3);
+    CHECK(drawn(false, true) == 0.0);
+    CHECK(drawn(true, false) > 0.0);
+}
