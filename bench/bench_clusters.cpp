@@ -5,7 +5,7 @@
 // Prints every run and the median.
 //
 //   bench_clusters [MESH] [RUNS] [MAX_FACES]   (default: ../shared/meshes/bunny-1M.ply next to the repo, 11 runs, 256)
-#include "median.h"
+#include "time_it.h"
 
 #include "geometry/cluster_bounds.h"
 #include "geometry/face_clusters.h"
@@ -29,29 +29,8 @@
 
 using Clock = std::chrono::steady_clock;
 
-using kappa::bench::median;
+using kappa::bench::time_it;
 
-namespace {
-
-// Runs `body` once untimed (warm-up), then `runs` timed times; prints each
-// wall time, then the medians of wall time and of process CPU time.
-void time_it(const char* label, int runs, const std::function<void()>& body) {
-    body();
-    std::vector<double> ms, cpu_ms;
-    std::printf("%-28s", label);
-    for (int r = 0; r < runs; ++r) {
-        const auto t0 = Clock::now();
-        const std::clock_t c0 = std::clock();
-        body();
-        cpu_ms.push_back(1000.0 * double(std::clock() - c0) / CLOCKS_PER_SEC);
-        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-        std::printf(" %.1f", ms.back());
-    }
-    std::printf("  | median %.2f ms wall, %.2f ms cpu\n", median(ms), median(cpu_ms));
-    std::fflush(stdout);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     const std::filesystem::path source_dir = std::filesystem::path(__FILE__).parent_path().parent_path();
