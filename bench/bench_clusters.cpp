@@ -17,20 +17,14 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
 
-using Clock = std::chrono::steady_clock;
-
 using kappa::bench::time_it;
-
 
 int main(int argc, char** argv) {
     const std::filesystem::path source_dir = std::filesystem::path(__FILE__).parent_path().parent_path();

@@ -4,6 +4,8 @@
 // c=C122, d=C222). All arrays have one entry per input vertex.
 #pragma once
 
+#include "vertex_flags.h"
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -21,6 +23,8 @@ struct SurfaceFields {
     std::vector<uint8_t> flags;          // VertexFlag bits
 
     size_t size() const { return normals.size(); }
+    // Whether vertex v's estimate is flagged unreliable; false without flags.
+    bool unreliable(size_t v) const { return v < flags.size() && (flags[v] & kFlagUnreliable); }
 };
 
 }  // namespace kappa

@@ -53,14 +53,7 @@ glm::vec3 interpolate_direction(const glm::vec3 d[3], const double w[3], const g
 
 }  // namespace
 
-double surface_area(const Mesh& mesh) {
-    double total = 0;
-    for (const Face& f : mesh.faces) total += face_area(mesh, f);
-    return total;
-}
-
-std::vector<SurfaceSample> sample_surface(const Mesh& mesh, const SurfaceFields& fields, size_t count,
-                                          uint64_t seed) {
+SurfaceSamples sample_surface(const Mesh& mesh, const SurfaceFields& fields, size_t count, uint64_t seed) {
     // Cumulative areas: a uniform number r in [0, total) picks the face
     // whose interval [cumulative[f - 1], cumulative[f]) holds it, with
     // probability proportional to its area. A guide table (Chen and Asau
@@ -70,14 +63,16 @@ std::vector<SurfaceSample> sample_surface(const Mesh& mesh, const SurfaceFields&
     parallel_for(nf, [&](size_t f) { cumulative[f] = face_area(mesh, mesh.faces[f]); });
     double total = 0;
     for (double& c : cumulative) c = total += c;
-    std::vector<SurfaceSample> samples;
-    if (!(total > 0)) return samples;
+    SurfaceSamples result;
+    result.area = total;
+    if (!(total > 0)) return result;
     std::vector<uint32_t> guide(nf);
     for (size_t k = 0, f = 0; k < nf; ++k) {
         const double r = total * double(k) / double(nf);
         while (f + 1 < nf && cumulative[f] <= r) ++f;
         guide[k] = uint32_t(f);
     }
+    std::vector<SurfaceSample>& samples = result.points;
     samples.resize(count);
     parallel_for(count, [&](size_t i) {
         SplitMix64 rng = sample_stream(seed, i);
@@ -112,7 +107,7 @@ std::vector<SurfaceSample> sample_surface(const Mesh& mesh, const SurfaceFields&
         s.direction = interpolate_direction(d, w, s.normal);
         s.face = uint32_t(f);
     });
-    return samples;
+    return result;
 }
 
 }  // namespace kappa

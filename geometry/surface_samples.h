@@ -23,13 +23,14 @@ struct SurfaceSample {
     uint32_t face;
 };
 
+struct SurfaceSamples {
+    std::vector<SurfaceSample> points;
+    double area = 0;  // total area of the faces, which the sampling needs anyway
+};
+
 // `count` samples from a fixed pseudo-random sequence (`seed`): the same
 // input gives the same samples. Faces of zero area are never chosen; a mesh
 // of zero total area gives none. fields must have one entry per vertex.
-std::vector<SurfaceSample> sample_surface(const Mesh& mesh, const SurfaceFields& fields, size_t count,
-                                          uint64_t seed = 1);
-
-// Total area of the faces.
-double surface_area(const Mesh& mesh);
+SurfaceSamples sample_surface(const Mesh& mesh, const SurfaceFields& fields, size_t count, uint64_t seed = 1);
 
 }  // namespace kappa

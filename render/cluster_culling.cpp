@@ -1,7 +1,5 @@
 #include "render/cluster_culling.h"
 
-#include "geometry/vertex_flags.h"
-
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
@@ -18,7 +16,6 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
     if (out.first_face.empty()) out.first_face = {0};
     out.may_have_suggestive.assign(clusters.size(), 0);
     out.max_strength.assign(clusters.size(), 0.0f);
-    const bool has_flags = fields.flags.size() == mesh.vertex_count();
     const double fs2 = double(feature_size) * double(feature_size);
     for (size_t c = 0; c < clusters.size(); ++c) {
         double strength = 0;
@@ -27,7 +24,7 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
             bool reliable = true, elliptic_up = true, elliptic_down = true;
             for (int k = 0; k < 3; ++k) {
                 const uint32_t v = f[k];
-                reliable = reliable && !(has_flags && (fields.flags[v] & kFlagUnreliable));
+                reliable = reliable && !fields.unreliable(v);
                 elliptic_up = elliptic_up && fields.k2[v] > 0;     // k1 >= k2 > 0: kr > 0
                 elliptic_down = elliptic_down && fields.k1[v] < 0;  // k2 <= k1 < 0: kr < 0
             }
@@ -46,8 +43,9 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
 
 namespace {
 
-// The six planes of the clip volume, widened by `margin` (in NDC units) in
-// x and y, as model-space planes a.p + d >= 0 (Gribb and Hartmann 2001).
+// The side and near planes of the clip volume, the sides widened by
+// `margin` (in NDC units), as model-space planes a.p + d >= 0 (Gribb and
+// Hartmann 2001). The far plane frames the whole model and is left out.
 struct Frustum {
     glm::vec4 planes[5];
 

@@ -1,7 +1,5 @@
 #include "render/colormap.h"
 
-#include "geometry/vertex_flags.h"
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -31,7 +29,7 @@ float robust_range(ColorMap map, const SurfaceFields& fields, float percentile) 
     values.reserve(fields.k1.size());
     for (int pass = 0; pass < 2 && values.empty(); ++pass)
         for (size_t i = 0; i < fields.k1.size(); ++i) {
-            const bool reliable = fields.flags.empty() || !(fields.flags[i] & kFlagUnreliable);
+            const bool reliable = !fields.unreliable(i);
             const float v = std::abs(colormap_scalar(map, fields, i));
             if ((reliable || pass == 1) && std::isfinite(v)) values.push_back(v);
         }

@@ -1,6 +1,5 @@
 #include "render/line_renderer.h"
 
-#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -52,15 +51,9 @@ void LineRenderer::draw_hatching(const MeshBuffers& mesh, const FrameParams& fra
     const double most_wanted = std::pow(pixels_per_unit / double(near_plane), 2) * strokes_per_area;
     const size_t count = size_t(std::min(std::ceil(most_wanted), double(mesh.hatch_sample_count())));
 
-    hatching_.use();
-    hatching_.set("u_mvp", frame.mvp);
-    hatching_.set("u_eye", frame.eye);
-    hatching_.set("u_viewport", frame.viewport);
-    hatching_.set("u_depth", 0);
-    hatching_.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
+    set_common(hatching_, mesh, frame, s);
     hatching_.set("u_normal_matrix", frame.normal_matrix);
-    const float len = glm::length(s.light_dir);
-    hatching_.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
+    hatching_.set("u_light", unit_light_direction(s));
     hatching_.set("u_pixels_per_unit", float(pixels_per_unit));
     hatching_.set("u_strokes_per_area", float(strokes_per_area));
     hatching_.set("u_stroke_length", s.hatch_stroke_length);
@@ -81,12 +74,11 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
 
     // Contours and suggestive contours: one pass over the triangles.
     if (s.lines.contours || s.lines.suggestive) {
-        ShaderProgram& p = isolines_;
-        set_common(p, mesh, frame, s);
-        p.set("u_contours", int(s.lines.contours));
-        p.set("u_suggestive", int(s.lines.suggestive));
-        p.set("u_sc_threshold", s.sc_threshold);
-        p.set("u_fade", int(s.fade));
+        set_common(isolines_, mesh, frame, s);
+        isolines_.set("u_contours", int(s.lines.contours));
+        isolines_.set("u_suggestive", int(s.lines.suggestive));
+        isolines_.set("u_sc_threshold", s.sc_threshold);
+        isolines_.set("u_fade", int(s.fade));
         if (s.cull_clusters)
             mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, s.lines.contours, s.lines.suggestive,
                                                   s.sc_threshold, 0.5f * s.line_width + 2.0f));

@@ -82,9 +82,8 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
 
     std::vector<GpuVertex> vertices(n);
     for (size_t i = 0; i < n; ++i) {
-        const bool unreliable = fields.flags.size() == n && (fields.flags[i] & kFlagUnreliable);
         vertices[i] = {mesh.positions[i], fields.normals[i], fields.d1[i], fields.d2[i],
-                       {fields.k1[i], fields.k2[i]}, fields.dcurv[i], unreliable ? 1.0f : 0.0f};
+                       {fields.k1[i], fields.k2[i]}, fields.dcurv[i], fields.unreliable(i) ? 1.0f : 0.0f};
     }
 
     glGenVertexArrays(1, &vao_);
@@ -114,10 +113,11 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), GL_STATIC_DRAW);
 
     // Hatching seeds: position, normal, direction (shaders/hatch_vert.glsl).
-    surface_area_ = kappa::surface_area(mesh);
+    const SurfaceSamples hatch_seeds = sample_surface(mesh, fields, kHatchSamples);
+    surface_area_ = hatch_seeds.area;
     std::vector<glm::vec3> samples;
-    for (const SurfaceSample& p : sample_surface(mesh, fields, kHatchSamples))
-        samples.insert(samples.end(), {p.position, p.normal, p.direction});
+    samples.reserve(3 * hatch_seeds.points.size());
+    for (const SurfaceSample& p : hatch_seeds.points) samples.insert(samples.end(), {p.position, p.normal, p.direction});
     hatch_samples_ = samples.size() / 3;
     glGenVertexArrays(1, &sample_vao_);
     glBindVertexArray(sample_vao_);

@@ -1,5 +1,7 @@
 #include "render/render_settings.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 
 namespace kappa::render {
@@ -16,6 +18,11 @@ std::optional<E> lookup(const std::vector<std::string>& names, const std::string
 }  // namespace
 
 // Word order matches the enum order.
+glm::vec3 unit_light_direction(const RenderSettings& settings) {
+    const float len = glm::length(settings.light_dir);
+    return len > 0 ? settings.light_dir / len : glm::vec3(0, 0, 1);
+}
+
 const std::vector<std::string>& shading_names() {
     static const std::vector<std::string> n{"none", "lambert", "toon"};
     return n;

@@ -44,6 +44,9 @@ struct RenderSettings {
     bool cull_clusters = true;         // skip clusters that cannot hold a line (same image; off for tests, benchmarks)
 };
 
+// settings.light_dir as a unit vector; straight towards the viewer when it is zero.
+glm::vec3 unit_light_direction(const RenderSettings& settings);
+
 // Names as on the command line (conventions.md). parse_* return nullopt for
 // an unknown word.
 const std::vector<std::string>& shading_names();

@@ -1,6 +1,5 @@
 #include "render/surface_renderer.h"
 
-#include <glm/geometric.hpp>
 
 namespace kappa::render {
 
@@ -14,8 +13,7 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     program_.set("u_model_view", frame.model_view);
     program_.set("u_normal_matrix", frame.normal_matrix);
     program_.set("u_shading", int(s.shading));
-    const float len = glm::length(s.light_dir);
-    program_.set("u_light", len > 0 ? s.light_dir / len : glm::vec3(0, 0, 1));
+    program_.set("u_light", unit_light_direction(s));
     program_.set("u_colormap", int(s.colormap));
     program_.set("u_map_range", mesh.map_range(s.colormap));
     glEnable(GL_DEPTH_TEST);

@@ -25,7 +25,7 @@ void check_proportion(size_t hits, size_t n, double p) {
 TEST_CASE("surface samples lie on their faces, with unit normals and tangent directions", "[geometry][samples]") {
     const Mesh torus = make_torus(1.0f, 0.3f, 96, 48);
     const SurfaceFields fields = compute_surface_fields(torus);
-    const auto samples = sample_surface(torus, fields, 20000);
+    const auto samples = sample_surface(torus, fields, 20000).points;
     REQUIRE(samples.size() == 20000);
     size_t with_direction = 0;
     for (const auto& s : samples) {
@@ -66,7 +66,8 @@ TEST_CASE("surface samples are uniform by area, in every prefix", "[geometry][sa
     SurfaceFields fields;
     fields.normals.assign(4, {0, 0, 1});
     fields.d1.assign(4, {1, 0, 0});
-    const auto samples = sample_surface(m, fields, 40000);
+    const SurfaceSamples sampling = sample_surface(m, fields, 40000);
+    const auto& samples = sampling.points;
     for (size_t n : {size_t(40000), size_t(5000), size_t(500)}) {
         size_t first = 0;
         for (size_t i = 0; i < n; ++i) first += samples[i].face == 0;
@@ -78,19 +79,19 @@ TEST_CASE("surface samples are uniform by area, in every prefix", "[geometry][sa
     for (const auto& s : samples)
         if (s.face == 0) ++in_face, near_corner += s.position.x + s.position.y < 0.5f;
     check_proportion(near_corner, in_face, 0.25);
-    CHECK(surface_area(m) == Approx(2.0).epsilon(1e-12));
+    CHECK(sampling.area == Approx(2.0).epsilon(1e-12));
 }
 
 TEST_CASE("surface samples are deterministic and skip faces of zero area", "[geometry][samples]") {
     Mesh m = make_icosphere(1.0f, 2);
     const SurfaceFields fields = compute_surface_fields(m);
-    const auto a = sample_surface(m, fields, 1000), b = sample_surface(m, fields, 1000);
+    const auto a = sample_surface(m, fields, 1000).points, b = sample_surface(m, fields, 1000).points;
     REQUIRE(a.size() == b.size());
     for (size_t i = 0; i < a.size(); ++i) {
         CHECK(a[i].face == b[i].face);
         CHECK(a[i].position == b[i].position);
     }
-    const auto c = sample_surface(m, fields, 1000, 7);
+    const auto c = sample_surface(m, fields, 1000, 7).points;
     size_t same = 0;
     for (size_t i = 0; i < a.size(); ++i) same += a[i].position == c[i].position;
     CHECK(same < 10);  // another seed, another sequence
@@ -101,7 +102,7 @@ TEST_CASE("surface samples are deterministic and skip faces of zero area", "[geo
     SurfaceFields padded = fields;
     padded.normals.push_back({0, 0, 1});
     padded.d1.push_back({1, 0, 0});
-    for (const auto& s : sample_surface(m, padded, 5000)) CHECK(s.face != m.face_count() - 1);
+    for (const auto& s : sample_surface(m, padded, 5000).points) CHECK(s.face != m.face_count() - 1);
 
     // Zero total area: no samples.
     Mesh flat;
@@ -110,6 +111,6 @@ TEST_CASE("surface samples are deterministic and skip faces of zero area", "[geo
     SurfaceFields line;
     line.normals.assign(3, {0, 0, 1});
     line.d1.assign(3, {1, 0, 0});
-    CHECK(sample_surface(flat, line, 100).empty());
-    CHECK(sample_surface(Mesh{}, SurfaceFields{}, 100).empty());
+    CHECK(sample_surface(flat, line, 100).points.empty());
+    CHECK(sample_surface(Mesh{}, SurfaceFields{}, 100).points.empty());
 }
