@@ -140,4 +140,22 @@ Mesh make_jittered_sphere(float radius, int levels, float jitter, uint32_t seed)
     return m;
 }
 
+void add_normal_noise(Mesh& mesh, float sigma, uint32_t seed) {
+    std::vector<glm::vec3> normals(mesh.vertex_count(), glm::vec3(0.0f));
+    for (const Face& f : mesh.faces) {
+        const glm::vec3 an =
+            glm::cross(mesh.positions[f[1]] - mesh.positions[f[0]], mesh.positions[f[2]] - mesh.positions[f[0]]);
+        for (int k = 0; k < 3; ++k) normals[f[k]] += an;
+    }
+    std::mt19937 rng(seed);
+    // Uniform in (0, 1] from 32 random bits, then Box-Muller (one Gaussian per pair).
+    auto uniform = [&] { return (double(rng()) + 1.0) / 4294967296.0; };
+    const double two_pi = 2.0 * glm::pi<double>();
+    for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+        const double g = std::sqrt(-2.0 * std::log(uniform())) * std::cos(two_pi * uniform());
+        const float len = glm::length(normals[i]);
+        if (len > 0) mesh.positions[i] += float(sigma * g) * (normals[i] / len);
+    }
+}
+
 }  // namespace kappa

@@ -32,4 +32,11 @@ Mesh make_grid(float size, int n);
 // given seed.
 Mesh make_jittered_sphere(float radius, int levels, float jitter, uint32_t seed);
 
+// Moves every vertex along its unit normal (the area-weighted mean of its
+// faces' normals, computed before any vertex moves) by an independent
+// Gaussian of standard deviation `sigma` (model units): the "normal noise"
+// of scans. Deterministic for a given seed on every platform (mt19937 and
+// Box-Muller, no std::normal_distribution). Vertices without a face stay.
+void add_normal_noise(Mesh& mesh, float sigma, uint32_t seed);
+
 }  // namespace kappa
