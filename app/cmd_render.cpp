@@ -10,6 +10,8 @@
 
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/scale/pixel_scale.h"
+#include "geometry/scale/scale_space.h"
 #include "geometry/surface_analysis.h"
 #include "render/camera.h"
 #include "render/egl_context.h"
@@ -21,6 +23,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace kappa::app {
@@ -101,6 +104,17 @@ int run_render(int argc, char** argv) {
         .number("--sc-threshold", s.sc_threshold,
                 "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)", 0,
                 1e6, "S")
+        .option("--detail", "PX|off", "smallest shape feature, in pixels, that draws lines: curvature is taken at "
+                "that scale on the surface (default 4; off: the raw 1-ring estimate)",
+                [&](const std::string& v) {
+                    if (v == "off") return s.detail = 0, true;
+                    char* end = nullptr;
+                    const float x = std::strtof(v.c_str(), &end);
+                    if (end == v.c_str() || *end || !(x > 0 && x <= 1000)) return false;
+                    s.detail = x;
+                    return true;
+                },
+                "a size in pixels (0 < PX <= 1000) or off")
         .number("--line-width", s.line_width, "line width in pixels (default 2)", 0.1, 64, "PX")
         .option("--fade", "on|off", "fade weak suggestive contours (default on)", on_off(s.fade), "on or off")
         .option("--background", "COLOR", "white, transparent, black or #rrggbb (default white)",
@@ -143,6 +157,14 @@ int run_render(int argc, char** argv) {
         const SurfaceFields fields =
             compute_surface_fields(mesh, smoothing, &times, [&](float f, const char* stage) { bar.update(f, stage); });
         bar.finish();
+        const bool use_detail = s.detail > 0 && !p.seen("--smooth-normals") && !p.seen("--smooth-curvature") &&
+                                !p.seen("--smooth-dcurv");
+        ScaleSpace space;
+        if (use_detail) {
+            const auto t_space = Clock::now();
+            space = build_scale_space(mesh, fields);
+            if (!quiet) std::printf("  scale space: %zu levels, %.3f s\n", space.levels.size(), seconds_since(t_space));
+        }
         const auto t_fs = Clock::now();
         const float fs = feature_size(mesh, fields);
         const double fs_s = seconds_since(t_fs);
@@ -203,7 +225,17 @@ int run_render(int argc, char** argv) {
             const render::Camera view =
                 turntable ? camera.orbited(orbit_center, axis, float(2 * M_PI * i / views)) : camera;
             const auto t_render = Clock::now();
-            const render::Image image = render::render_to_image(renderer, view, s, size.x, size.y);
+            if (use_detail) {
+            const auto t_scale = Clock::now();
+            std::vector<float> sigma = pixel_sizes(mesh, view.view, view.fov_y_deg, size.y);
+            const std::vector<glm::vec3> fine_normals = normals_at_scale(mesh, space, fields, sigma);
+            for (float& x : sigma) x *= s.detail;
+            const SurfaceFields at_scale = fields_at_scale(mesh, space, fields, sigma);
+            const double scale_s = seconds_since(t_scale);
+            renderer.update_fields(mesh, at_scale, fs, fine_normals);
+            if (!quiet) std::printf("  fields at %g px: %.3f s\n", s.detail, scale_s);
+        }
+        const render::Image image = render::render_to_image(renderer, view, s, size.x, size.y);
             const double render_s = seconds_since(t_render);
             const std::string path = turntable ? numbered_path(out_path, i) : out_path;
             const auto t_write = Clock::now();

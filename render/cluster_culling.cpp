@@ -9,9 +9,10 @@
 namespace kappa::render {
 
 MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
-                                float feature_size) {
+                                float feature_size, const std::vector<glm::vec3>& fine_normals) {
     MeshClusters out;
     out.bounds = compute_cluster_bounds(mesh, fields.normals, clusters);
+    if (!fine_normals.empty()) out.fine_bounds = compute_cluster_bounds(mesh, fine_normals, clusters);
     out.first_face = clusters.cluster_start;
     if (out.first_face.empty()) out.first_face = {0};
     out.may_have_suggestive.assign(clusters.size(), 0);
@@ -75,7 +76,9 @@ std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const Frame
         const ClusterBounds& b = clusters.bounds[c];
         if (!frustum.may_touch(b)) continue;
         const Facing facing = classify_facing(b, frame.eye);
-        const bool draw = (contours && facing == Facing::Mixed) ||
+        const Facing contour_facing =
+            clusters.fine_bounds.empty() ? facing : classify_facing(clusters.fine_bounds[c], frame.eye);
+        const bool draw = (contours && contour_facing == Facing::Mixed) ||
                           (suggestive && clusters.may_have_suggestive[c] &&
                            (facing == Facing::Mixed || (facing == Facing::Front && clusters.max_strength[c] > sc_threshold)));
         if (!draw) continue;

@@ -31,7 +31,8 @@
 namespace kappa::render {
 
 struct MeshClusters {
-    std::vector<ClusterBounds> bounds;
+    std::vector<ClusterBounds> bounds;          // sphere, and cone of the fields' normals
+    std::vector<ClusterBounds> fine_bounds;  // cone of the fine normals, for contours (empty: the same as bounds)
     std::vector<uint32_t> first_face;  // size clusters + 1, in the uploaded (cluster) order
     std::vector<uint8_t> may_have_suggestive;
     std::vector<float> max_strength;  // bound on Dw kr fs^2 over the reliable front-facing vertices, any view
@@ -40,9 +41,10 @@ struct MeshClusters {
 };
 
 // fields must have one entry per vertex (flags may be empty); feature_size:
-// fs, as given to the shaders.
+// fs, as given to the shaders; fine_normals: empty, or one per vertex
+// when occluding contours use normals of their own (MeshBuffers).
 MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
-                                float feature_size);
+                                float feature_size, const std::vector<glm::vec3>& fine_normals = {});
 
 struct FaceRun {
     uint32_t first, count;  // faces [first, first + count) of the uploaded order

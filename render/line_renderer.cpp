@@ -79,6 +79,8 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         isolines_.set("u_suggestive", int(s.lines.suggestive));
         isolines_.set("u_sc_threshold", s.sc_threshold);
         isolines_.set("u_fade", int(s.fade));
+        // One pixel spans 2 w / (P[1][1] height) model units at camera distance w.
+        isolines_.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
         if (s.cull_clusters)
             mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, s.lines.contours, s.lines.suggestive,
                                                   s.sc_threshold, 0.5f * s.line_width + 2.0f));

@@ -23,6 +23,7 @@ struct GpuVertex {
     glm::vec2 curv;   // k1, k2
     glm::vec4 dcurv;  // a, b, c, d
     float unreliable;
+    glm::vec3 fine_normal;
 };
 
 // Edges used by exactly one face, as vertex index pairs. Only faces with
@@ -51,6 +52,13 @@ std::vector<uint32_t> boundary_edges(const Mesh& mesh, const SurfaceFields& fiel
     return out;
 }
 
+void check_fields(const Mesh& mesh, const SurfaceFields& fields) {
+    const size_t n = mesh.vertex_count();
+    if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
+        fields.d2.size() != n || fields.dcurv.size() != n)
+        throw std::invalid_argument("MeshBuffers: surface fields do not match the mesh's vertex count");
+}
+
 void set_attribute(GLuint location, int components, size_t offset) {
     glEnableVertexAttribArray(location);
     glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, sizeof(GpuVertex),
@@ -67,36 +75,26 @@ void set_vertex_attributes() {
     set_attribute(4, 2, offsetof(GpuVertex, curv));
     set_attribute(5, 4, offsetof(GpuVertex, dcurv));
     set_attribute(6, 1, offsetof(GpuVertex, unreliable));
+    set_attribute(7, 3, offsetof(GpuVertex, fine_normal));
 }
 
 }  // namespace
 
 MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size)
-    : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()), feature_size_(feature_size) {
-    const size_t n = mesh.vertex_count();
-    if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
-        fields.d2.size() != n || fields.dcurv.size() != n)
-        throw std::invalid_argument("MeshBuffers: surface fields do not match the mesh's vertex count");
+    : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
+    check_fields(mesh, fields);
     bounds_ = bounding_sphere(mesh);
-    for (size_t m = 0; m < ranges_.size(); ++m) ranges_[m] = robust_range(ColorMap(m), fields);
-
-    std::vector<GpuVertex> vertices(n);
-    for (size_t i = 0; i < n; ++i) {
-        vertices[i] = {mesh.positions[i], fields.normals[i], fields.d1[i], fields.d2[i],
-                       {fields.k1[i], fields.k2[i]}, fields.dcurv[i], fields.unreliable(i) ? 1.0f : 0.0f};
-    }
 
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
     glGenBuffers(1, &vertex_buffer_);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(GpuVertex)), nullptr, GL_DYNAMIC_DRAW);
     set_vertex_attributes();
     // Triangles in cluster order, so the contour pass can draw runs of them.
-    const FaceClusters clusters = cluster_faces(mesh, kClusterFaces);
-    clusters_ = make_mesh_clusters(mesh, fields, clusters, feature_size);
+    face_clusters_ = cluster_faces(mesh, kClusterFaces);
     std::vector<Face> ordered(mesh.faces.size());
-    for (size_t i = 0; i < ordered.size(); ++i) ordered[i] = mesh.faces[clusters.face_order[i]];
+    for (size_t i = 0; i < ordered.size(); ++i) ordered[i] = mesh.faces[face_clusters_.face_order[i]];
     glGenBuffers(1, &triangle_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
@@ -113,23 +111,51 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), GL_STATIC_DRAW);
 
     // Hatching seeds: position, normal, direction (shaders/hatch_vert.glsl).
-    const SurfaceSamples hatch_seeds = sample_surface(mesh, fields, kHatchSamples);
-    surface_area_ = hatch_seeds.area;
-    std::vector<glm::vec3> samples;
-    samples.reserve(3 * hatch_seeds.points.size());
-    for (const SurfaceSample& p : hatch_seeds.points) samples.insert(samples.end(), {p.position, p.normal, p.direction});
-    hatch_samples_ = samples.size() / 3;
     glGenVertexArrays(1, &sample_vao_);
     glBindVertexArray(sample_vao_);
     glGenBuffers(1, &sample_buffer_);
     glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(samples.size() * sizeof(glm::vec3)), samples.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(kHatchSamples * 3 * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
     for (GLuint location = 0; location < 3; ++location) {
         glEnableVertexAttribArray(location);
         glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(glm::vec3),
                               reinterpret_cast<const void*>(location * sizeof(glm::vec3)));
     }
     glBindVertexArray(0);
+    update_fields(mesh, fields, feature_size);
+}
+
+void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                const std::vector<glm::vec3>& fine_normals) {
+    check_fields(mesh, fields);
+    const bool own_fine = !fine_normals.empty();
+    if (own_fine && fine_normals.size() != mesh.vertex_count())
+        throw std::invalid_argument("MeshBuffers: contour normals do not match the mesh's vertex count");
+    if (mesh.vertex_count() != vertex_count_ || mesh.face_count() != face_count_)
+        throw std::invalid_argument("MeshBuffers: new fields for a different mesh");
+    feature_size_ = feature_size;
+    for (size_t m = 0; m < ranges_.size(); ++m) ranges_[m] = robust_range(ColorMap(m), fields);
+
+    const size_t n = mesh.vertex_count();
+    std::vector<GpuVertex> vertices(n);
+    for (size_t i = 0; i < n; ++i) {
+        vertices[i] = {mesh.positions[i], fields.normals[i], fields.d1[i], fields.d2[i],
+                       {fields.k1[i], fields.k2[i]}, fields.dcurv[i], fields.unreliable(i) ? 1.0f : 0.0f,
+                       own_fine ? fine_normals[i] : fields.normals[i]};
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data());
+    clusters_ = make_mesh_clusters(mesh, fields, face_clusters_, feature_size, fine_normals);
+
+    const SurfaceSamples hatch_seeds = sample_surface(mesh, fields, kHatchSamples);
+    surface_area_ = hatch_seeds.area;
+    std::vector<glm::vec3> samples;
+    samples.reserve(3 * hatch_seeds.points.size());
+    for (const SurfaceSample& p : hatch_seeds.points) samples.insert(samples.end(), {p.position, p.normal, p.direction});
+    hatch_samples_ = samples.size() / 3;
+    glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(samples.size() * sizeof(glm::vec3)), samples.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 MeshBuffers::~MeshBuffers() {

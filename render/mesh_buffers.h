@@ -1,5 +1,5 @@
-// The mesh and its curvature fields on the GPU, uploaded once: one
-// interleaved vertex buffer (position, normal, d1, d2, k1 k2, C, flags),
+// The mesh and its curvature fields on the GPU: one interleaved vertex
+// buffer (position, normal, d1, d2, k1 k2, C, flags, contour normal),
 // the triangles, the open boundary edges, and random surface samples that
 // seed hatching strokes (geometry/surface_samples.h). Every view-dependent quantity
 // is computed from these in the shaders, per frame.
@@ -22,6 +22,12 @@ public:
     // vertex. feature_size: the mesh's feature size fs (geometry/feature_size.h).
     MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size);
     ~MeshBuffers();
+    // Replaces the fields (same mesh): vertex attributes, culling bounds,
+    // colour-map ranges and hatching seeds. For fields at a new scale.
+    // fine_normals: normals at pixel scale, for occluding contours (zeros
+    // of n.v) and shading (empty: fields.normals).
+    void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                       const std::vector<glm::vec3>& fine_normals = {});
     MeshBuffers(const MeshBuffers&) = delete;
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 
@@ -52,6 +58,7 @@ private:
     double surface_area_ = 0;
     float feature_size_ = 1;
     BoundingSphere bounds_;
+    FaceClusters face_clusters_;
     MeshClusters clusters_;
     std::array<float, 7> ranges_{};
 };

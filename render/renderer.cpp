@@ -12,6 +12,11 @@ void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float fea
     mesh_ = std::make_unique<MeshBuffers>(mesh, fields, feature_size);
 }
 
+void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                             const std::vector<glm::vec3>& fine_normals) {
+    if (mesh_) mesh_->update_fields(mesh, fields, feature_size, fine_normals);
+}
+
 void Renderer::ensure_buffers(int width, int height, bool msaa) {
     const int samples = msaa ? 4 : 0;
     if (msaa && !surface_ms_fb_.matches(width, height, samples))

@@ -31,6 +31,9 @@ public:
 
     // Uploads the mesh and its fields (replacing any previous mesh).
     void set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size);
+    // New fields for the mesh already uploaded (same vertices and faces).
+    void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                       const std::vector<glm::vec3>& fine_normals = {});
     const MeshBuffers* mesh() const { return mesh_.get(); }
 
     // Draws one view into `target`. Without a mesh, clears to the background.

@@ -6,6 +6,7 @@ layout(triangle_strip, max_vertices = 4) out;
 in LineVertex {
     vec3 position;
     float ndotv;
+    float contour_ndotv;
     float kr;
     float sc_strength;
     float unreliable;

@@ -10,6 +10,7 @@ layout(triangle_strip, max_vertices = 8) out;  // contour, suggestive contour
 in LineVertex {
     vec3 position;
     float ndotv;
+    float contour_ndotv;
     float kr;
     float sc_strength;
     float unreliable;
@@ -56,16 +57,21 @@ bool find_crossings(float f[3], out Crossing c0, out Crossing c1) {
 float lerp_at(Crossing c, float values[3]) { return mix(values[c.lo], values[c.hi], c.s); }
 vec4 clip_at(Crossing c) { return mix(gl_in[c.lo].gl_Position, gl_in[c.hi].gl_Position, c.s); }
 
+uniform float u_scale_tolerance;  // detail (px) x pixel size per unit of camera distance; 0 without detail
+
 // Occlusion tolerance: half the longest edge (a smooth contour can lie that
-// far behind the polygonal surface drawn in the depth buffer).
+// far behind the polygonal surface drawn in the depth buffer), or the scale
+// of the fields (with --detail, lines follow the surface smoothed at that
+// scale and can lie that far behind its polygons).
 float triangle_tolerance() {
     float l = max(max(distance(v_in[0].position, v_in[1].position), distance(v_in[1].position, v_in[2].position)),
                   distance(v_in[2].position, v_in[0].position));
-    return 0.5 * l;
+    float w = max(max(gl_in[0].gl_Position.w, gl_in[1].gl_Position.w), gl_in[2].gl_Position.w);
+    return max(0.5 * l, u_scale_tolerance * w);
 }
 
 void contour_segment() {
-    float f[3] = float[3](v_in[0].ndotv, v_in[1].ndotv, v_in[2].ndotv);
+    float f[3] = float[3](v_in[0].contour_ndotv, v_in[1].contour_ndotv, v_in[2].contour_ndotv);
     Crossing c0, c1;
     if (!find_crossings(f, c0, c1)) return;
     emit_segment(clip_at(c0), clip_at(c1), 1.0, 1.0, triangle_tolerance());

@@ -6,7 +6,8 @@ uniform float u_feature_size_sq;  // fs^2: Dw kr * fs^2 is dimensionless
 
 out LineVertex {
     vec3 position;      // model coordinates
-    float ndotv;
+    float ndotv;        // n.v with the normal of the curvature fields
+    float contour_ndotv;  // n.v with the contour normal: occluding contours are its zeros
     float kr;           // kr sin^2(theta)
     float sc_strength;  // Dw kr * fs^2, compared with the dimensionless threshold
     float unreliable;
@@ -18,6 +19,7 @@ void main() {
     ViewQuantities q = view_quantities(a_normal, a_d1, a_d2, a_curv, a_dcurv, v);
     v_out.position = a_position;
     v_out.ndotv = q.ndotv;
+    v_out.contour_ndotv = dot(a_fine_normal, v);
     v_out.kr = q.kr_sin2;
     v_out.sc_strength = q.dwkr * u_feature_size_sq;
     v_out.unreliable = a_unreliable;

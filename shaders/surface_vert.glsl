@@ -9,7 +9,7 @@ out vec2 v_map_value;    // colormap_value()
 
 void main() {
     vec4 clip = u_mvp * vec4(a_position, 1.0);
-    v_normal = u_normal_matrix * a_normal;
+    v_normal = u_normal_matrix * a_fine_normal;
     v_map_value = colormap_value(u_colormap, a_curv, a_dcurv);
     gl_Position = clip;
 }

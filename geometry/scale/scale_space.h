@@ -1,0 +1,72 @@
+// kappa's scale space: normals, curvature and its derivative C at a range of
+// surface scales, and per-vertex fields at any scale in between.
+//
+// The paper's estimator (Rusinkiewicz 2004) is right at one scale, the
+// mesh's own: on a noisy scan or a mesh much finer than a pixel it draws
+// scribbles. Following the idea of Ni et al. 2006 ("Multi-scale line
+// drawings from 3D meshes": precompute fields at several scales, pick one
+// per vertex from its projected pixel size), each level of a cluster
+// pyramid (cluster_pyramid.h) gets its own fields, estimated on the
+// clusters as the paper does on faces but over a Gaussian neighbourhood:
+//   1. normal: the clusters' area-weighted mean normals, averaged with
+//      weights A_Q exp(-d^2 / 2 sigma^2) over the clusters Q within
+//      2.5 sigma (reached through cluster adjacency, facing the same way);
+//   2. curvature: the weighted least-squares fit of II from normal
+//      differences along centroid differences, II e = dn (paper eq. 3,
+//      with neighbours in place of a face's edges);
+//   3. C: the same fit of C from curvature differences, C(e) = dII
+//      (paper sec. 3.4).
+// sigma is the level's cell size; level k has twice the scale of level
+// k - 1. The raw per-vertex estimate counts as the scale raw_scale (half a
+// mean edge). fields_at_scale() blends, per vertex, the two levels around
+// the wanted sigma (linearly in log sigma): each level's value at a vertex
+// is the bump-weighted mean of its cluster and the adjacent ones, tensors
+// moved between frames by the paper's rotation (tensor_frames.h).
+#pragma once
+
+#include "cluster_pyramid.h"
+#include "geometry/mesh.h"
+#include "geometry/surface_fields.h"
+#include "geometry/tensor_frames.h"
+
+#include <vector>
+
+namespace kappa {
+
+struct ScaleLevelFields {
+    std::vector<glm::vec3> normal;   // unit
+    std::vector<Tensor2> curvature;  // in tangent_frame(normal)
+    std::vector<glm::vec4> dcurv;    // (C111, C112, C122, C222) in tangent_frame(normal)
+    std::vector<uint8_t> valid;      // 0 where the cluster had too little around it for a fit
+};
+
+struct ScaleSpace {
+    float raw_scale = 0;  // the scale the raw per-vertex estimate stands for
+    ClusterPyramid pyramid;
+    std::vector<ScaleLevelFields> levels;  // one per pyramid level
+
+    bool empty() const { return levels.empty(); }
+    float level_scale(size_t level) const { return pyramid.levels[level].cell; }
+    // Largest scale available (raw_scale when there are no levels).
+    float max_scale() const { return empty() ? raw_scale : level_scale(levels.size() - 1); }
+};
+
+// Builds the pyramid (first cell 2 mean edge lengths, up to the bounding
+// radius) and the fields of every level. raw: compute_surface_fields' output
+// for this mesh (its normals and areas seed the pyramid).
+ScaleSpace build_scale_space(const Mesh& mesh, const SurfaceFields& raw);
+
+// Per-vertex fields at scale sigma[v] (model units). sigma[v] <= raw_scale
+// gives the raw fields exactly; flagged vertices always keep their raw
+// values. Deterministic for any thread count.
+SurfaceFields fields_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+                              const std::vector<float>& sigma);
+
+// Only the normals of fields_at_scale (cheaper).
+std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+                                        const std::vector<float>& sigma);
+
+// The same with one sigma for every vertex.
+SurfaceFields fields_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw, float sigma);
+
+}  // namespace kappa
