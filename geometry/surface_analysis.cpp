@@ -4,6 +4,7 @@
 #include "dcurvature.h"
 #include "face_geometry.h"
 #include "normals.h"
+#include "scale/auto_smoothing.h"
 #include "smoothing.h"
 #include "vertex_faces.h"
 #include "vertex_flags.h"
@@ -29,7 +30,7 @@ private:
 
 }  // namespace
 
-SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing, StageTimes* times,
+SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& requested, StageTimes* times,
                                      const ProgressFn& progress) {
     StageTimes local;
     StageTimes& t = times ? *times : local;
@@ -60,6 +61,17 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
         out.normals = compute_vertex_normals(vf, faces);
         std::vector<glm::vec3>().swap(faces.inv_edge_len2);  // only normals need it: free it early
     }
+    out.smoothing = requested;
+    if (requested.automatic) {
+        report(0.22f, "estimating noise");
+        StageTimer timer(&t.smoothing);
+        out.noise = estimate_noise_level(mesh, vf, out.normals);
+        const SmoothingOptions chosen = choose_smoothing_widths(out.noise);
+        if (!(out.smoothing.normals > 0)) out.smoothing.normals = chosen.normals;
+        if (!(out.smoothing.curvature > 0)) out.smoothing.curvature = chosen.curvature;
+        if (!(out.smoothing.dcurv > 0)) out.smoothing.dcurv = chosen.dcurv;
+    }
+    const SmoothingOptions& smoothing = out.smoothing;
     if (smoothing.normals > 0) {
         report(0.25f, "smoothing normals");
         StageTimer timer(&t.smoothing);

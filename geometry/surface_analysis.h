@@ -10,13 +10,6 @@
 
 namespace kappa {
 
-// Gaussian smoothing widths (sigma) in model units; 0 disables a stage.
-struct SmoothingOptions {
-    float normals = 0;    // smooth normals before curvature is estimated
-    float curvature = 0;  // smooth the curvature tensor
-    float dcurv = 0;      // smooth the derivative-of-curvature tensor
-};
-
 // Wall-clock seconds spent in each stage.
 struct StageTimes {
     double adjacency = 0, normals = 0, areas = 0, curvature = 0, dcurv = 0, smoothing = 0;
@@ -27,6 +20,10 @@ struct StageTimes {
 // calling thread only.
 using ProgressFn = std::function<void(float, const char*)>;
 
+// With smoothing.automatic, the noise level is estimated from the raw
+// normals (scale/noise_level.h) and every width left at 0 is chosen from it
+// (scale/auto_smoothing.h); explicit widths are kept. The widths used and
+// the noise estimate are in the result's `smoothing` and `noise`.
 SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing = {},
                                      StageTimes* times = nullptr, const ProgressFn& progress = {});
 

@@ -4,6 +4,7 @@
 // c=C122, d=C222). All arrays have one entry per input vertex.
 #pragma once
 
+#include "scale/noise_level.h"
 #include "vertex_flags.h"
 
 #include <glm/vec3.hpp>
@@ -14,6 +15,14 @@
 
 namespace kappa {
 
+// Gaussian smoothing widths (sigma) in model units; 0 disables a stage.
+struct SmoothingOptions {
+    float normals = 0;       // smooth normals before curvature is estimated
+    float curvature = 0;     // smooth the curvature tensor
+    float dcurv = 0;         // smooth the derivative-of-curvature tensor
+    bool automatic = false;  // choose the widths left at 0 from the mesh's noise level
+};
+
 struct SurfaceFields {
     std::vector<glm::vec3> normals;      // unit, outward
     std::vector<float> point_areas;      // mixed Voronoi area (Meyer et al. 2002)
@@ -21,6 +30,8 @@ struct SurfaceFields {
     std::vector<glm::vec3> d1, d2;       // unit principal directions, d1 x d2 = n
     std::vector<glm::vec4> dcurv;        // (a, b, c, d) in the (d1, d2) frame
     std::vector<uint8_t> flags;          // VertexFlag bits
+    SmoothingOptions smoothing;          // the widths actually used (automatic: as requested)
+    NoiseLevel noise;                    // the estimate behind automatic widths (zero otherwise)
 
     size_t size() const { return normals.size(); }
     // Whether vertex v's estimate is flagged unreliable; false without flags.
