@@ -251,7 +251,17 @@ Parser& Parser::threads() {
 }
 
 Parser& Parser::smoothing(SmoothingOptions& out) {
-    return number("--smooth-normals", out.normals,
+    return option(
+               "--smooth", "auto|off",
+               "auto: estimate the mesh's noise level and choose the smoothing widths from it (widths given "
+               "below are kept); off: only the widths given below (default)",
+               [&out](const std::string& value) {
+                   if (value != "auto" && value != "off") return false;
+                   out.automatic = value == "auto";
+                   return true;
+               },
+               "auto or off")
+        .number("--smooth-normals", out.normals,
                   "Gaussian smoothing width (sigma, model units) for normals before curvature; 0 = off", 0)
         .number("--smooth-curvature", out.curvature, "Gaussian smoothing width for the curvature tensor; 0 = off", 0)
         .number("--smooth-dcurv", out.dcurv, "Gaussian smoothing width for C; 0 = off", 0);

@@ -66,7 +66,10 @@ int run_curvature(int argc, char** argv) {
                 "k1 >= k2 (signed, convex positive), d1 x d2 = n, (a,b,c,d) = (C111,C112,C122,C222) in the\n"
                 "(d1,d2) frame. The PLY output carries the same values as vertex properties, plus 'flags'\n"
                 "(1 isolated, 2 degenerate, 4 boundary, 8 non-manifold).\n"
-                "Example: kappa curvature bunny.ply -o bunny.csv --smooth-curvature 0.002");
+                "Smoothing is off by default (the raw estimate, reproducible). For scans and other noisy\n"
+                "meshes use --smooth auto: it estimates the noise and chooses the widths, printed in the\n"
+                "summary and written in the PLY header (README, 'kappa curvature').\n"
+                "Example: kappa curvature scan.ply -o scan.ply --smooth auto");
     if (auto status = p.parse(argc, argv)) return *status;
     if (out_path.empty()) {
         std::fprintf(stderr, "kappa curvature: missing -o OUT.csv|OUT.ply (see 'kappa curvature --help')\n");
@@ -114,6 +117,12 @@ int run_curvature(int argc, char** argv) {
         std::printf("  boundary vertices %zu, flagged (unreliable) vertices %zu\n", boundary, flagged);
         std::printf("  k1 in [%.6g, %.6g], k2 in [%.6g, %.6g] (unflagged vertices)\n", k1_lo, k1_hi, k2_lo, k2_hi);
         std::printf("  feature size %.6g\n", feature_size(mesh, fields));
+        if (fields.smoothing.automatic)
+            std::printf("  noise level %.6g (%.4g median edges of %.6g), estimated from %zu vertices\n",
+                        fields.noise.sigma, fields.noise.relative, fields.noise.median_edge, fields.noise.samples);
+        std::printf("  smoothing widths%s: normals %.6g, curvature %.6g, dcurv %.6g\n",
+                    fields.smoothing.automatic ? " (auto)" : "", fields.smoothing.normals, fields.smoothing.curvature,
+                    fields.smoothing.dcurv);
         std::printf("  time: load %.3f s, adjacency %.3f s, normals %.3f s, areas %.3f s, curvature %.3f s, "
                     "dcurv %.3f s, smoothing %.3f s, write %.3f s\n",
                     load_s, times.adjacency, times.normals, times.areas, times.curvature, times.dcurv,

@@ -74,10 +74,17 @@ bool smoothing_section(SmoothingOptions& sm, const Model* model, bool computing,
         if (ImGui::SliderFloat(label, &in_fs, 0.0f, 2.0f, in_fs > 0 ? "%.3f fs" : "off")) sigma = in_fs * fs;
         recompute |= ImGui::IsItemDeactivatedAfterEdit();
     };
+    // auto: widths left at 0 are chosen from the mesh's noise level (README, "kappa curvature").
+    if (ImGui::Checkbox("auto (from the noise level)", &sm.automatic)) recompute = true;
     width("normals", sm.normals);
     width("curvature", sm.curvature);
     width("derivative C", sm.dcurv);
     ImGui::TextDisabled("Gaussian sigma, fs = %.4g model units", fs);
+    if (model && model->fields.smoothing.automatic) {
+        const SmoothingOptions& used = model->fields.smoothing;
+        ImGui::TextDisabled("noise %.3g edges; used %.3f, %.3f, %.3f fs", model->fields.noise.relative,
+                            used.normals / fs, used.curvature / fs, used.dcurv / fs);
+    }
     if (computing) {
         char overlay[64];
         std::snprintf(overlay, sizeof overlay, "%s %d%%", stage.c_str(), int(progress * 100));

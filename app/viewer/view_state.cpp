@@ -76,6 +76,11 @@ const std::map<std::string, Setter>& setters() {
         {"hatch-spacing", number(2, 100, [](ViewState& s) -> auto& { return s.settings.hatch_spacing; })},
         {"sc-threshold", number(0, 1e6f, [](ViewState& s) -> auto& { return s.settings.sc_threshold; })},
         {"line-width", number(0.1f, 64, [](ViewState& s) -> auto& { return s.settings.line_width; })},
+        {"smooth", {"auto or off", [](ViewState& s, const std::string& v) {
+                        if (v != "auto" && v != "off") return false;
+                        s.smoothing.automatic = v == "auto";
+                        return true;
+                    }}},
         {"smooth-normals", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.normals; })},
         {"smooth-curvature", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.curvature; })},
         {"smooth-dcurv", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.dcurv; })},

@@ -8,6 +8,7 @@
 #include "output_file.h"
 
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -17,10 +18,27 @@ namespace {
 
 constexpr size_t kChunkBytes = 1 << 20;
 
-std::string ply_header(const Mesh& mesh, bool binary) {
+// "comment smoothing normals 0 curvature 0 dcurv 0" with the widths used
+// (%.9g), plus the noise estimate when they were chosen automatically.
+std::string smoothing_comment(const SurfaceFields& fields) {
+    const SmoothingOptions& s = fields.smoothing;
+    char line[256];
+    std::snprintf(line, sizeof line, "comment smoothing normals %.9g curvature %.9g dcurv %.9g", s.normals,
+                  s.curvature, s.dcurv);
+    std::string out = line;
+    if (s.automatic) {
+        std::snprintf(line, sizeof line, " (auto: noise sigma %.6g = %.4g median edges of %.6g)", fields.noise.sigma,
+                      fields.noise.relative, fields.noise.median_edge);
+        out += line;
+    }
+    return out + "\n";
+}
+
+std::string ply_header(const Mesh& mesh, const SurfaceFields& fields, bool binary) {
     std::string h = "ply\nformat ";
     h += binary ? "binary_little_endian 1.0\n" : "ascii 1.0\n";
     h += "comment written by kappa: curvature per vertex (Rusinkiewicz 2004), see conventions.md\n";
+    h += smoothing_comment(fields);
     h += "element vertex " + std::to_string(mesh.vertex_count()) + "\n";
     for (const char* column : kFieldColumnNames) h += std::string("property float ") + column + "\n";
     h += "property uchar flags\n";
@@ -110,7 +128,7 @@ void write_ply(const std::string& path, const Mesh& mesh, const SurfaceFields& f
     if (mesh.vertex_count() > size_t(std::numeric_limits<int32_t>::max()))
         fail_write(path, "too many vertices for 32-bit PLY indices");
     OutputFile file(path);
-    file.write(ply_header(mesh, binary));
+    file.write(ply_header(mesh, fields, binary));
     write_vertices(file, mesh, fields, binary);
     write_faces(file, mesh, binary);
     file.close();
