@@ -13,7 +13,7 @@ namespace kappa {
 namespace {
 
 constexpr int kCoefficients = 10;  // 1, x, y, x^2, xy, y^2, x^3, x^2 y, x y^2, y^3
-constexpr size_t kTargetSamples = 32768;
+constexpr size_t kTargetSamples = 16384;
 
 // Neighbours of v through its faces, appended to out (with repeats).
 void append_neighbours(const Mesh& mesh, const VertexFaces& vf, uint32_t v, std::vector<uint32_t>& out) {
