@@ -2,6 +2,7 @@
 
 #include "geometry/ldlt.h"
 #include "geometry/parallel.h"
+#include "tensor3.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,7 +13,7 @@ namespace kappa {
 
 namespace {
 
-constexpr float kNeighbourhood = 2.5f;  // fits reach 2.5 sigma
+constexpr float kNeighbourhood = 2.0f;  // fits reach 2 cells
 constexpr float kPushRadius = 1.25f;    // a vertex takes values from clusters within 1.25 cells
 constexpr double kFitTolerance = 1e-3;  // relative pivot below which a fit is refused (collinear neighbours)
 
@@ -61,11 +62,59 @@ struct Neighbourhood {
     }
 };
 
+// The fits' kernel: area x (1 - d^2 / R^2)^2 within R = 2.5 cells, a smooth
+// bump close to a Gaussian of sigma = one cell, cheaper than exp().
+inline float kernel(float area, float d2, float inv_r2) {
+    const float x = 1.0f - d2 * inv_r2;
+    return x > 0 ? area * x * x : 0.0f;
+}
+
+// Every cluster's fit neighbourhood (Neighbourhood::visit within R), with
+// kernel weights, in compressed rows: gathered once, used by all three fits.
+struct NeighbourLists {
+    std::vector<uint32_t> offsets, cluster;
+    std::vector<float> weight;
+};
+
+NeighbourLists gather_neighbourhoods(const ClusterLevel& level, const std::vector<glm::vec3>& dir, float radius) {
+    const size_t n = level.size();
+    const float inv_r2 = 1.0f / (radius * radius);
+    // Each thread gathers a contiguous range of clusters; the ranges are
+    // concatenated in order, so the lists do not depend on the thread count.
+    const size_t chunks = std::max<size_t>(1, std::min<size_t>(64, n / 1024));
+    std::vector<NeighbourLists> parts(chunks);
+    parallel_for(chunks, [&](size_t c) {
+        const size_t first = n * c / chunks, last = n * (c + 1) / chunks;
+        NeighbourLists& part = parts[c];
+        part.offsets.reserve(last - first);
+        Neighbourhood nb;
+        for (size_t p = first; p < last; ++p) {
+            if (dir[p] != glm::vec3(0.0f))
+                nb.visit(level, dir, uint32_t(p), radius, [&](uint32_t q, float d2) {
+                    const float w = kernel(level.area[q], d2, inv_r2);
+                    if (w > 0 || q == p) {
+                        part.cluster.push_back(q);
+                        part.weight.push_back(w);
+                    }
+                });
+            part.offsets.push_back(uint32_t(part.cluster.size()));
+        }
+    }, 1);
+    NeighbourLists out;
+    out.offsets.reserve(n + 1);
+    out.offsets.push_back(0);
+    for (const NeighbourLists& part : parts) {
+        const uint32_t base = uint32_t(out.cluster.size());
+        for (uint32_t end : part.offsets) out.offsets.push_back(base + end);
+        out.cluster.insert(out.cluster.end(), part.cluster.begin(), part.cluster.end());
+        out.weight.insert(out.weight.end(), part.weight.begin(), part.weight.end());
+    }
+    return out;
+}
+
 // Fields of one level (steps 1-3 of the header).
 ScaleLevelFields fit_level(const ClusterLevel& level) {
     const size_t n = level.size();
-    const float sigma = level.cell, radius = kNeighbourhood * sigma;
-    const float inv2s2 = 1.0f / (2.0f * sigma * sigma);
     ScaleLevelFields out;
     out.normal.resize(n);
     out.curvature.resize(n);
@@ -77,86 +126,77 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
         const float len = glm::length(level.normal_sum[c]);
         dir[c] = len > 0 && std::isfinite(len) ? level.normal_sum[c] / len : glm::vec3(0.0f);
     }
+    const NeighbourLists nb = gather_neighbourhoods(level, dir, kNeighbourhood * level.cell);
 
     // 1. Normals.
-    parallel_for_ranges(n, [&](size_t first, size_t last) {
-        Neighbourhood nb;
-        for (size_t p = first; p < last; ++p) {
-            glm::dvec3 sum(0.0);
-            if (dir[p] != glm::vec3(0.0f))
-                nb.visit(level, dir, uint32_t(p), radius, [&](uint32_t q, float d2) {
-                    sum += double(level.area[q] * std::exp(-d2 * inv2s2)) * glm::dvec3(dir[q]);
-                });
-            const double len = glm::length(sum);
-            out.normal[p] = len > 0 ? glm::vec3(sum / len) : glm::vec3(0, 0, 1);
-        }
-    }, 256);
+    parallel_for(n, [&](size_t p) {
+        glm::vec3 sum(0.0f);
+        for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) sum += nb.weight[k] * dir[nb.cluster[k]];
+        const float len = glm::length(sum);
+        out.normal[p] = len > 0 && std::isfinite(len) ? sum / len : glm::vec3(0, 0, 1);
+    }, 1024);
 
     // 2. Curvature: II e = dn in the tangent frame of each cluster.
-    parallel_for_ranges(n, [&](size_t first, size_t last) {
-        Neighbourhood nb;
-        for (size_t p = first; p < last; ++p) {
-            if (dir[p] == glm::vec3(0.0f)) continue;
-            glm::vec3 u, v;
-            tangent_frame(out.normal[p], u, v);
-            double diag[3] = {0, 0, 0}, off[2] = {0, 0}, rhs[3] = {0, 0, 0};
-            nb.visit(level, dir, uint32_t(p), radius, [&](uint32_t q, float d2) {
-                if (q == p) return;
-                const double w = double(level.area[q]) * std::exp(-d2 * inv2s2);
-                const glm::vec3 e = level.centroid[q] - level.centroid[p];
-                const glm::vec3 dn = out.normal[q] - out.normal[p];
-                const double e1 = glm::dot(e, u), e2 = glm::dot(e, v);
-                const double n1 = glm::dot(dn, u), n2 = glm::dot(dn, v);
-                diag[0] += w * e1 * e1;
-                diag[1] += w * (e1 * e1 + e2 * e2);
-                diag[2] += w * e2 * e2;
-                off[0] += w * e1 * e2;
-                off[1] += w * e1 * e2;
-                rhs[0] += w * e1 * n1;
-                rhs[1] += w * (e2 * n1 + e1 * n2);
-                rhs[2] += w * e2 * n2;
-            });
-            double x[3];
-            if (ldlt_solve_tridiagonal<3>(diag, off, rhs, x, kFitTolerance)) {
-                out.curvature[p] = Tensor2{float(x[0]), float(x[1]), float(x[2])};
-                out.valid[p] = 1;
-            }
+    std::vector<Tensor2> curvature(n);
+    parallel_for(n, [&](size_t p) {
+        if (dir[p] == glm::vec3(0.0f)) return;
+        glm::vec3 u, v;
+        tangent_frame(out.normal[p], u, v);
+        double diag[3] = {0, 0, 0}, off[2] = {0, 0}, rhs[3] = {0, 0, 0};
+        for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) {
+            const uint32_t q = nb.cluster[k];
+            const float w = nb.weight[k];
+            const glm::vec3 e = level.centroid[q] - level.centroid[p];
+            const glm::vec3 dn = out.normal[q] - out.normal[p];
+            const float e1 = glm::dot(e, u), e2 = glm::dot(e, v);
+            const float n1 = glm::dot(dn, u), n2 = glm::dot(dn, v);
+            diag[0] += w * e1 * e1;
+            diag[1] += w * (e1 * e1 + e2 * e2);
+            diag[2] += w * e2 * e2;
+            off[0] += w * e1 * e2;
+            rhs[0] += w * e1 * n1;
+            rhs[1] += w * (e2 * n1 + e1 * n2);
+            rhs[2] += w * e2 * n2;
         }
-    }, 256);
+        off[1] = off[0];
+        double x[3];
+        if (ldlt_solve_tridiagonal<3>(diag, off, rhs, x, kFitTolerance)) {
+            curvature[p] = Tensor2{float(x[0]), float(x[1]), float(x[2])};
+            out.curvature[p] = embed(curvature[p], u, v);
+            out.valid[p] = 1;
+        }
+    }, 1024);
 
-    // 3. C: C(e) = dII, with the neighbours' tensors moved into p's frame.
-    parallel_for_ranges(n, [&](size_t first, size_t last) {
-        Neighbourhood nb;
-        for (size_t p = first; p < last; ++p) {
-            if (!out.valid[p]) continue;
-            glm::vec3 u, v;
-            tangent_frame(out.normal[p], u, v);
-            const Tensor2 t0 = out.curvature[p];
-            double diag[4] = {0, 0, 0, 0}, off[3] = {0, 0, 0}, rhs[4] = {0, 0, 0, 0};
-            nb.visit(level, dir, uint32_t(p), radius, [&](uint32_t q, float d2) {
-                if (q == p || !out.valid[q]) return;
-                const double w = double(level.area[q]) * std::exp(-d2 * inv2s2);
-                glm::vec3 uq, vq;
-                tangent_frame(out.normal[q], uq, vq);
-                const Tensor2 tq = project_tensor(uq, vq, out.curvature[q], u, v);
-                const glm::vec3 e = level.centroid[q] - level.centroid[p];
-                const double e1 = glm::dot(e, u), e2 = glm::dot(e, v);
-                const double duu = tq.ku - t0.ku, duv = tq.kuv - t0.kuv, dvv = tq.kv - t0.kv;
-                diag[0] += w * e1 * e1;
-                diag[1] += w * (e1 * e1 + e2 * e2);
-                diag[2] += w * (e1 * e1 + e2 * e2);
-                diag[3] += w * e2 * e2;
-                for (double& o : off) o += w * e1 * e2;
-                rhs[0] += w * e1 * duu;
-                rhs[1] += w * (e2 * duu + e1 * duv);
-                rhs[2] += w * (e2 * duv + e1 * dvv);
-                rhs[3] += w * e2 * dvv;
-            });
-            double x[4];
-            if (ldlt_solve_tridiagonal<4>(diag, off, rhs, x, kFitTolerance))
-                out.dcurv[p] = glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3]));
+    // 3. C: C(e) = dII, the neighbours' tensors restricted to p's frame.
+    parallel_for(n, [&](size_t p) {
+        if (!out.valid[p]) return;
+        glm::vec3 u, v;
+        tangent_frame(out.normal[p], u, v);
+        const Tensor2 t0 = curvature[p];
+        double diag[4] = {0, 0, 0, 0}, off[3] = {0, 0, 0}, rhs[4] = {0, 0, 0, 0};
+        for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) {
+            const uint32_t q = nb.cluster[k];
+            if (!out.valid[q]) continue;
+            const float w = nb.weight[k];
+            const Tensor2 tq = restrict_to(out.curvature[q], u, v);
+            const glm::vec3 e = level.centroid[q] - level.centroid[p];
+            const float e1 = glm::dot(e, u), e2 = glm::dot(e, v);
+            const float duu = tq.ku - t0.ku, duv = tq.kuv - t0.kuv, dvv = tq.kv - t0.kv;
+            diag[0] += w * e1 * e1;
+            diag[1] += w * (e1 * e1 + e2 * e2);
+            diag[3] += w * e2 * e2;
+            off[0] += w * e1 * e2;
+            rhs[0] += w * e1 * duu;
+            rhs[1] += w * (e2 * duu + e1 * duv);
+            rhs[2] += w * (e2 * duv + e1 * dvv);
+            rhs[3] += w * e2 * dvv;
         }
-    }, 256);
+        diag[2] = diag[1];
+        off[1] = off[2] = off[0];
+        double x[4];
+        if (ldlt_solve_tridiagonal<4>(diag, off, rhs, x, kFitTolerance))
+            out.dcurv[p] = embed(glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3])), u, v);
+    }, 1024);
     return out;
 }
 
@@ -176,35 +216,96 @@ bool sample_level(const ClusterLevel& level, const ScaleLevelFields& fields, uin
     const uint32_t home = level.vertex_cluster[vertex];
     const float r = kPushRadius * level.cell, inv_r2 = 1.0f / (r * r);
     s.count = 0;
-    double wsum = 0;
-    glm::dvec3 nsum(0.0);
+    float wsum = 0;
+    glm::vec3 nsum(0.0f);
     auto take = [&](uint32_t q) {
         if (!fields.valid[q] || s.count == LevelSample::kMax) return;
         const glm::vec3 d = level.centroid[q] - p;
-        const float x = 1.0f - glm::dot(d, d) * inv_r2;
-        if (x <= 0) return;
-        const float w = level.area[q] * x * x;
+        const float w = kernel(level.area[q], glm::dot(d, d), inv_r2);
         if (!(w > 0)) return;
         s.cluster[s.count] = q;
         s.weight[s.count++] = w;
         wsum += w;
-        nsum += double(w) * glm::dvec3(fields.normal[q]);
+        nsum += w * fields.normal[q];
     };
     take(home);
     for (uint32_t k = level.adj_offsets[home]; k < level.adj_offsets[home + 1]; ++k) take(level.adj[k]);
     if (s.count == 0 && fields.valid[home]) {  // a vertex far out in its cell: its cluster alone
         s.cluster[0] = home;
-        s.weight[0] = 1;
+        s.weight[0] = wsum = 1;
         s.count = 1;
-        wsum = 1;
-        nsum = glm::dvec3(fields.normal[home]);
+        nsum = fields.normal[home];
     }
     if (s.count == 0) return false;
-    for (int i = 0; i < s.count; ++i) s.weight[i] = float(s.weight[i] / wsum);
-    const double len = glm::length(nsum);
-    if (!(len > 0)) return false;
-    s.normal = glm::vec3(nsum / len);
+    for (int i = 0; i < s.count; ++i) s.weight[i] /= wsum;
+    const float len = glm::length(nsum);
+    if (!(len > 0) || !std::isfinite(len)) return false;
+    s.normal = nsum / len;
     return true;
+}
+
+// Level coordinate of a scale: -1 for the raw estimate, l for level l,
+// linear in log sigma in between; clamped to the top level.
+float level_coordinate(const ScaleSpace& space, float sigma) {
+    const float log_first = std::log2(space.level_scale(0)), log_raw = std::log2(space.raw_scale);
+    const float ls = std::log2(std::max(sigma, space.raw_scale));
+    const float lambda = ls < log_first ? -1.0f + (ls - log_raw) / (log_first - log_raw) : ls - log_first;
+    return std::min(lambda, float(space.levels.size() - 1));
+}
+
+// A vertex's blend of two neighbouring estimates: level lo (-1: the raw
+// estimate) with share[0], level lo + 1 with share[1].
+struct VertexBlend {
+    int lo = -1;
+    float share[2] = {1, 0};
+    LevelSample samples[2];
+    bool use[2] = {false, false};  // false: the raw estimate stands in for that level
+    glm::vec3 normal{0.0f};        // unit blended normal
+};
+
+// Fills `b` for vertex v at scale sigma; returns false where the raw fields
+// are kept as they are (flagged vertex, sigma at or below the raw scale).
+bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw, size_t v, float sigma,
+                  VertexBlend& b) {
+    if (space.levels.empty() || raw.unreliable(v) || !(sigma > space.raw_scale)) return false;
+    const float lambda = level_coordinate(space, sigma);
+    b.lo = int(std::floor(lambda));
+    const float t = lambda - float(b.lo);
+    b.share[0] = 1.0f - t;
+    b.share[1] = t;
+    glm::vec3 n(0.0f);
+    for (int i = 0; i < 2; ++i) {
+        const int l = b.lo + i;
+        b.use[i] = false;
+        if (b.share[i] <= 0.0f) continue;
+        if (l >= 0 && space.levels[size_t(l)].fitted() &&
+            sample_level(space.pyramid.levels[size_t(l)], space.levels[size_t(l)], uint32_t(v), mesh.positions[v],
+                         b.samples[i])) {
+            b.use[i] = true;
+            n += b.share[i] * b.samples[i].normal;
+        } else {
+            n += b.share[i] * raw.normals[v];
+        }
+    }
+    const float len = glm::length(n);
+    if (!(len > 0) || !std::isfinite(len)) return false;
+    b.normal = n / len;
+    return true;
+}
+
+// Fits the levels that scales in [lo, hi] blend from.
+void fit_levels_for(ScaleSpace& space, float lo, float hi) {
+    if (space.levels.empty() || !(hi > space.raw_scale)) return;
+    const int first = std::max(0, int(std::floor(level_coordinate(space, lo))));
+    const int last = int(std::ceil(level_coordinate(space, hi)));
+    for (int l = first; l <= last && l < int(space.levels.size()); ++l)
+        if (!space.levels[size_t(l)].fitted()) space.levels[size_t(l)] = fit_level(space.pyramid.levels[size_t(l)]);
+}
+
+void fit_levels_for(ScaleSpace& space, const std::vector<float>& sigma) {
+    if (sigma.empty()) return;
+    const auto [lo, hi] = std::minmax_element(sigma.begin(), sigma.end());
+    fit_levels_for(space, *lo, *hi);
 }
 
 }  // namespace
@@ -220,101 +321,50 @@ ScaleSpace build_scale_space(const Mesh& mesh, const SurfaceFields& raw) {
         hi = glm::max(hi, p);
     }
     const float radius = 0.5f * glm::length(hi - lo);
-    space.pyramid = build_cluster_pyramid(mesh, raw.point_areas, raw.normals, 2.0f * h, radius);
+    space.pyramid = build_cluster_pyramid(mesh, raw.point_areas, raw.normals, 3.0f * h, radius);
     space.levels.resize(space.pyramid.levels.size());
-    for (size_t l = 0; l < space.levels.size(); ++l) space.levels[l] = fit_level(space.pyramid.levels[l]);
     return space;
 }
 
-namespace {
+void fit_all_levels(ScaleSpace& space) { fit_levels_for(space, space.raw_scale, space.max_scale()); }
 
-// A vertex's blend of two neighbouring estimates: level lo (-1: the raw
-// estimate) with share[0], level lo + 1 with share[1], linear in log sigma.
-struct VertexBlend {
-    int lo = -1;
-    float share[2] = {1, 0};
-    LevelSample samples[2];
-    bool use[2] = {false, false};  // false: the raw estimate stands in for that level
-    glm::vec3 normal{0.0f};        // unit blended normal; zero when there is none
-};
-
-// Fills `b` for vertex v at scale sigma; returns false where the raw fields
-// are kept as they are (flagged vertex, sigma at or below the raw scale).
-bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw, size_t v, float sigma,
-                  VertexBlend& b) {
-    const size_t levels = space.levels.size();
-    if (levels == 0 || raw.unreliable(v) || !(sigma > space.raw_scale)) return false;
-    // Level coordinate: -1 for the raw estimate, l for level l.
-    const float log_first = std::log2(space.level_scale(0)), log_raw = std::log2(space.raw_scale);
-    const float ls = std::log2(sigma);
-    float lambda = ls < log_first ? -1.0f + (ls - log_raw) / (log_first - log_raw) : ls - log_first;
-    lambda = std::min(lambda, float(levels - 1));
-    b.lo = int(std::floor(lambda));
-    const float t = lambda - float(b.lo);
-    b.share[0] = 1.0f - t;
-    b.share[1] = t;
-    glm::vec3 n(0.0f);
-    for (int i = 0; i < 2; ++i) {
-        const int l = b.lo + i;
-        b.use[i] = false;
-        if (b.share[i] <= 0.0f) continue;
-        if (l >= 0 && sample_level(space.pyramid.levels[size_t(l)], space.levels[size_t(l)], uint32_t(v),
-                                   mesh.positions[v], b.samples[i])) {
-            b.use[i] = true;
-            n += b.share[i] * b.samples[i].normal;
-        } else {
-            n += b.share[i] * raw.normals[v];
-        }
-    }
-    const float len = glm::length(n);
-    if (!(len > 0)) return false;
-    b.normal = n / len;
-    return true;
-}
-
-}  // namespace
-
-SurfaceFields fields_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                               const std::vector<float>& sigma) {
+    fit_levels_for(space, sigma);
     SurfaceFields out = raw;
     parallel_for(mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
         if (!blend_vertex(mesh, space, raw, v, sigma[v], b)) return;
-        const glm::vec3 n = b.normal;
-        glm::vec3 u, w;
-        tangent_frame(n, u, w);
-        Tensor2 tensor{0, 0, 0};
-        glm::vec4 dcurv(0.0f);
-        auto add = [&](float weight, const glm::vec3& fu, const glm::vec3& fv, const Tensor2& t, const glm::vec4& c) {
-            const Tensor2 r = project_tensor(fu, fv, t, u, w);
-            tensor.ku += weight * r.ku;
-            tensor.kuv += weight * r.kuv;
-            tensor.kv += weight * r.kv;
-            dcurv += weight * project_dcurv(fu, fv, c, u, w);
-        };
+        Sym3 tensor;
+        SymCubic3 dcurv;
         for (int i = 0; i < 2; ++i) {
             if (b.share[i] <= 0.0f) continue;
             if (!b.use[i]) {
-                add(b.share[i], raw.d1[v], raw.d2[v], Tensor2{raw.k1[v], 0, raw.k2[v]}, raw.dcurv[v]);
+                add_scaled(tensor, b.share[i], embed(Tensor2{raw.k1[v], 0, raw.k2[v]}, raw.d1[v], raw.d2[v]));
+                add_scaled(dcurv, b.share[i], embed(raw.dcurv[v], raw.d1[v], raw.d2[v]));
                 continue;
             }
             const ScaleLevelFields& f = space.levels[size_t(b.lo + i)];
             for (int k = 0; k < b.samples[i].count; ++k) {
                 const uint32_t q = b.samples[i].cluster[k];
-                glm::vec3 qu, qv;
-                tangent_frame(f.normal[q], qu, qv);
-                add(b.share[i] * b.samples[i].weight[k], qu, qv, f.curvature[q], f.dcurv[q]);
+                const float w = b.share[i] * b.samples[i].weight[k];
+                add_scaled(tensor, w, f.curvature[q]);
+                add_scaled(dcurv, w, f.dcurv[q]);
             }
         }
+        const glm::vec3 n = b.normal;
+        glm::vec3 u, w;
+        tangent_frame(n, u, w);
         out.normals[v] = n;
-        diagonalize_tensor(u, w, n, tensor, out.d1[v], out.d2[v], out.k1[v], out.k2[v]);
-        out.dcurv[v] = project_dcurv(u, w, dcurv, out.d1[v], out.d2[v]);
+        diagonalize_tensor(u, w, n, restrict_to(tensor, u, w), out.d1[v], out.d2[v], out.k1[v], out.k2[v]);
+        out.dcurv[v] = restrict_to(dcurv, out.d1[v], out.d2[v]);
     }, 2048);
     return out;
 }
 
-std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                                         const std::vector<float>& sigma) {
+    fit_levels_for(space, sigma);
     std::vector<glm::vec3> out = raw.normals;
     parallel_for(mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
@@ -323,7 +373,7 @@ std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, const ScaleSpace& spac
     return out;
 }
 
-SurfaceFields fields_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw, float sigma) {
+SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, float sigma) {
     return fields_at_scale(mesh, space, raw, std::vector<float>(mesh.vertex_count(), sigma));
 }
 

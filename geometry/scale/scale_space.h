@@ -9,8 +9,9 @@
 // pyramid (cluster_pyramid.h) gets its own fields, estimated on the
 // clusters as the paper does on faces but over a Gaussian neighbourhood:
 //   1. normal: the clusters' area-weighted mean normals, averaged with
-//      weights A_Q exp(-d^2 / 2 sigma^2) over the clusters Q within
-//      2.5 sigma (reached through cluster adjacency, facing the same way);
+//      weights A_Q (1 - d^2 / R^2)^2 over the clusters Q within R = 2.5
+//      sigma (reached through cluster adjacency, facing the same way): a
+//      bump close to a Gaussian of width sigma;
 //   2. curvature: the weighted least-squares fit of II from normal
 //      differences along centroid differences, II e = dn (paper eq. 3,
 //      with neighbours in place of a face's edges);
@@ -20,26 +21,32 @@
 // k - 1. The raw per-vertex estimate counts as the scale raw_scale (half a
 // mean edge). fields_at_scale() blends, per vertex, the two levels around
 // the wanted sigma (linearly in log sigma): each level's value at a vertex
-// is the bump-weighted mean of its cluster and the adjacent ones, tensors
-// moved between frames by the paper's rotation (tensor_frames.h).
+// is the bump-weighted mean of its cluster and the adjacent ones, with
+// tensors summed as tensors of 3D space (tensor3.h) and restricted to the
+// vertex's blended tangent plane.
 #pragma once
 
 #include "cluster_pyramid.h"
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
 #include "geometry/tensor_frames.h"
+#include "tensor3.h"
 
 #include <vector>
 
 namespace kappa {
 
 struct ScaleLevelFields {
-    std::vector<glm::vec3> normal;   // unit
-    std::vector<Tensor2> curvature;  // in tangent_frame(normal)
-    std::vector<glm::vec4> dcurv;    // (C111, C112, C122, C222) in tangent_frame(normal)
-    std::vector<uint8_t> valid;      // 0 where the cluster had too little around it for a fit
+    std::vector<glm::vec3> normal;  // unit
+    std::vector<Sym3> curvature;    // II as a tensor of 3D space (tensor3.h)
+    std::vector<SymCubic3> dcurv;   // C as a tensor of 3D space
+    std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
+
+    bool fitted() const { return !valid.empty(); }
 };
 
+// Levels are fitted when first needed: a drawing at one scale pays for the
+// one or two levels it blends.
 struct ScaleSpace {
     float raw_scale = 0;  // the scale the raw per-vertex estimate stands for
     ClusterPyramid pyramid;
@@ -52,21 +59,26 @@ struct ScaleSpace {
 };
 
 // Builds the pyramid (first cell 2 mean edge lengths, up to the bounding
-// radius) and the fields of every level. raw: compute_surface_fields' output
-// for this mesh (its normals and areas seed the pyramid).
+// radius), with no level fitted yet. raw: compute_surface_fields' output for
+// this mesh (its normals and areas seed the pyramid).
 ScaleSpace build_scale_space(const Mesh& mesh, const SurfaceFields& raw);
 
-// Per-vertex fields at scale sigma[v] (model units). sigma[v] <= raw_scale
-// gives the raw fields exactly; flagged vertices always keep their raw
-// values. Deterministic for any thread count.
-SurfaceFields fields_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+// Fits every level (the viewer does this in the background, so zooming
+// never waits).
+void fit_all_levels(ScaleSpace& space);
+
+// Per-vertex fields at scale sigma[v] (model units), fitting the levels
+// they need first. sigma[v] <= raw_scale gives the raw fields exactly;
+// flagged vertices always keep their raw values. Deterministic for any
+// thread count.
+SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                               const std::vector<float>& sigma);
 
 // Only the normals of fields_at_scale (cheaper).
-std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                                         const std::vector<float>& sigma);
 
 // The same with one sigma for every vertex.
-SurfaceFields fields_at_scale(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw, float sigma);
+SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, float sigma);
 
 }  // namespace kappa
