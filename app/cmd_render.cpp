@@ -10,10 +10,9 @@
 
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/scale/pixel_scale.h"
-#include "geometry/scale/scale_space.h"
 #include "geometry/surface_analysis.h"
 #include "render/camera.h"
+#include "render/detail_fields.h"
 #include "render/egl_context.h"
 #include "render/png_writer.h"
 #include "render/render_settings.h"
@@ -105,7 +104,7 @@ int run_render(int argc, char** argv) {
                 "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)", 0,
                 1e6, "S")
         .option("--detail", "PX|off", "smallest shape feature, in pixels, that draws lines: curvature is taken at "
-                "that scale on the surface (default 4; off: the raw 1-ring estimate)",
+                "that scale on the surface (default 12; off: the raw 1-ring estimate)",
                 [&](const std::string& v) {
                     if (v == "off") return s.detail = 0, true;
                     char* end = nullptr;
@@ -157,16 +156,12 @@ int run_render(int argc, char** argv) {
         const SurfaceFields fields =
             compute_surface_fields(mesh, smoothing, &times, [&](float f, const char* stage) { bar.update(f, stage); });
         bar.finish();
-        const bool use_detail = s.detail > 0 && !p.seen("--smooth-normals") && !p.seen("--smooth-curvature") &&
-                                !p.seen("--smooth-dcurv");
-        ScaleSpace space;
-        if (use_detail) {
-            const auto t_space = Clock::now();
-            space = build_scale_space(mesh, fields);
-            if (!quiet) std::printf("  scale space: %zu levels, %.3f s\n", space.levels.size(), seconds_since(t_space));
-        }
+        // Explicit smoothing widths override the detail setting (README, "kappa render").
+        if (p.seen("--smooth-normals") || p.seen("--smooth-curvature") || p.seen("--smooth-dcurv")) s.detail = 0;
         const auto t_fs = Clock::now();
-        const float fs = feature_size(mesh, fields);
+        render::DetailSource detail_source;
+        if (s.detail > 0) detail_source = render::make_detail_source(mesh, fields);
+        const float fs = s.detail > 0 ? 0.0f : feature_size(mesh, fields);  // with detail: per view
         const double fs_s = seconds_since(t_fs);
 
         // Camera: .xf file, eye/target/up, or framing the bounding sphere.
@@ -200,22 +195,16 @@ int run_render(int argc, char** argv) {
         }
         render::Renderer renderer;
         const double context_s = seconds_since(t_context);
-        const auto t_upload = Clock::now();
-        renderer.set_mesh(mesh, fields, fs);
-        const double upload_s = seconds_since(t_upload);
-
         if (!quiet) {
-            std::printf("%s: %zu vertices, %zu faces, feature size %.6g\n", mesh_display_name(mesh_path).c_str(),
-                        mesh.vertex_count(), mesh.face_count(), fs);
+            std::printf("%s: %zu vertices, %zu faces\n", mesh_display_name(mesh_path).c_str(), mesh.vertex_count(),
+                        mesh.face_count());
             std::printf("  load %.3f s, curvature %.3f s (normals %.3f, curvature %.3f, dcurv %.3f, smoothing %.3f), "
-                        "feature size %.3f s\n",
-                        load_s, times.total(), times.normals, times.curvature, times.dcurv, times.smoothing, fs_s);
-            std::printf("  %s (context + shaders %.3f s), upload %.3f s\n", context->description().c_str(), context_s,
-                        upload_s);
-            if (s.colormap != render::ColorMap::None)
-                std::printf("  colour map %s over %s%.6g]\n", render::to_string(s.colormap).c_str(),
-                            s.colormap == render::ColorMap::DCurv ? "[0, " : "[-",
-                            renderer.mesh()->map_range(s.colormap));
+                        "%s %.3f s\n",
+                        load_s, times.total(), times.normals, times.curvature, times.dcurv, times.smoothing,
+                        s.detail > 0 ? "scale space" : "feature size", fs_s);
+            if (s.detail > 0 && detail_source.noise_floor > 0)
+                std::printf("  scan noise: no detail finer than %.4g model units\n", detail_source.noise_floor);
+            std::printf("  %s (context + shaders %.3f s)\n", context->description().c_str(), context_s);
         }
 
         // The turntable turns around the camera's up axis through the target.
@@ -224,18 +213,29 @@ int run_render(int argc, char** argv) {
         for (int i = 0; i < views; ++i) {
             const render::Camera view =
                 turntable ? camera.orbited(orbit_center, axis, float(2 * M_PI * i / views)) : camera;
+            // Upload: once, or per view when the fields follow the view (--detail).
+            const auto t_upload = Clock::now();
+            float view_fs = fs;
+            if (s.detail > 0) {
+                render::DetailFields d = render::detail_fields(mesh, detail_source, fields, view, size.y, s.detail);
+                view_fs = d.feature_size;
+                if (i == 0) renderer.set_mesh(mesh, d.fields, view_fs, d.fine_normals);
+                else renderer.update_fields(mesh, d.fields, view_fs, d.fine_normals);
+            } else if (i == 0) {
+                renderer.set_mesh(mesh, fields, fs);
+            }
+            const double upload_s = seconds_since(t_upload);
+            if (!quiet && (i == 0 || s.detail > 0)) {
+                if (s.detail > 0) std::printf("  fields at %g px detail", s.detail);
+                else std::printf("  fields");
+                std::printf(", feature size %.6g: %.3f s (upload included)\n", view_fs, upload_s);
+                if (s.colormap != render::ColorMap::None)
+                    std::printf("  colour map %s over %s%.6g]\n", render::to_string(s.colormap).c_str(),
+                                s.colormap == render::ColorMap::DCurv ? "[0, " : "[-",
+                                renderer.mesh()->map_range(s.colormap));
+            }
             const auto t_render = Clock::now();
-            if (use_detail) {
-            const auto t_scale = Clock::now();
-            std::vector<float> sigma = pixel_sizes(mesh, view.view, view.fov_y_deg, size.y);
-            const std::vector<glm::vec3> fine_normals = normals_at_scale(mesh, space, fields, sigma);
-            for (float& x : sigma) x *= s.detail;
-            const SurfaceFields at_scale = fields_at_scale(mesh, space, fields, sigma);
-            const double scale_s = seconds_since(t_scale);
-            renderer.update_fields(mesh, at_scale, fs, fine_normals);
-            if (!quiet) std::printf("  fields at %g px: %.3f s\n", s.detail, scale_s);
-        }
-        const render::Image image = render::render_to_image(renderer, view, s, size.x, size.y);
+            const render::Image image = render::render_to_image(renderer, view, s, size.x, size.y);
             const double render_s = seconds_since(t_render);
             const std::string path = turntable ? numbered_path(out_path, i) : out_path;
             const auto t_write = Clock::now();

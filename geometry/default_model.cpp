@@ -68,8 +68,9 @@ const Ridge kRidges[] = {
 
 }  // namespace
 
-Mesh make_default_model() {
-    Mesh mesh = make_icosphere(1.0f, 6);
+Mesh make_default_model() { return make_default_model_from(make_icosphere(1.0f, 6)); }
+
+Mesh make_default_model_from(Mesh mesh) {
     const glm::vec3 stretch(1.2f, 1.0f, 0.9f);
     for (glm::vec3& p : mesh.positions) {
         const glm::vec3 d = glm::normalize(p);

@@ -16,4 +16,10 @@ namespace kappa {
 // Deterministic: fixed parameters, no randomness, identical on every call.
 Mesh make_default_model();
 
+// The same shape on another tessellation of the unit sphere (its vertices
+// are displaced the same way): e.g. make_icosphere(1, 8) gives 1.3M faces,
+// make_jittered_sphere an irregular one. Tests compare drawings of the one
+// shape across tessellations.
+Mesh make_default_model_from(Mesh unit_sphere);
+
 }  // namespace kappa

@@ -80,7 +80,8 @@ void set_vertex_attributes() {
 
 }  // namespace
 
-MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size)
+MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                         const std::vector<glm::vec3>& fine_normals)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
     check_fields(mesh, fields);
     bounds_ = bounding_sphere(mesh);
@@ -122,7 +123,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
                               reinterpret_cast<const void*>(location * sizeof(glm::vec3)));
     }
     glBindVertexArray(0);
-    update_fields(mesh, fields, feature_size);
+    update_fields(mesh, fields, feature_size, fine_normals);
 }
 
 void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,

@@ -20,7 +20,8 @@ class MeshBuffers {
 public:
     // Uploads; needs a current GL context. fields must have one entry per
     // vertex. feature_size: the mesh's feature size fs (geometry/feature_size.h).
-    MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size);
+    MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                const std::vector<glm::vec3>& fine_normals = {});
     ~MeshBuffers();
     // Replaces the fields (same mesh): vertex attributes, culling bounds,
     // colour-map ranges and hatching seeds. For fields at a new scale.

@@ -28,7 +28,7 @@ struct RenderSettings {
     float line_width = 2.0f;           // pixels, constant at any zoom
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
     bool fade = true;                  // fade weak suggestive contours towards the threshold
-    float detail = 4.0f;               // pixels: lines follow the surface at this scale (0 = off: the raw 1-ring fields)
+    float detail = 12.0f;              // pixels: lines follow the surface at this scale (0 = off: the raw 1-ring fields)
     glm::vec3 line_color{0, 0, 0};
 
     Shading shading = Shading::Lambert;

@@ -7,9 +7,10 @@ namespace kappa::render {
 Renderer::Renderer() = default;
 Renderer::~Renderer() = default;
 
-void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size) {
+void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                        const std::vector<glm::vec3>& fine_normals) {
     mesh_.reset();
-    mesh_ = std::make_unique<MeshBuffers>(mesh, fields, feature_size);
+    mesh_ = std::make_unique<MeshBuffers>(mesh, fields, feature_size, fine_normals);
 }
 
 void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,

@@ -30,7 +30,9 @@ public:
     ~Renderer();
 
     // Uploads the mesh and its fields (replacing any previous mesh).
-    void set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size);
+    // fine_normals: see MeshBuffers::update_fields.
+    void set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                  const std::vector<glm::vec3>& fine_normals = {});
     // New fields for the mesh already uploaded (same vertices and faces).
     void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                        const std::vector<glm::vec3>& fine_normals = {});

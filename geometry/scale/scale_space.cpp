@@ -321,7 +321,7 @@ ScaleSpace build_scale_space(const Mesh& mesh, const SurfaceFields& raw) {
         hi = glm::max(hi, p);
     }
     const float radius = 0.5f * glm::length(hi - lo);
-    space.pyramid = build_cluster_pyramid(mesh, raw.point_areas, raw.normals, 3.0f * h, radius);
+    space.pyramid = build_cluster_pyramid(mesh, raw.point_areas, raw.normals, 1.5f * h, radius);
     space.levels.resize(space.pyramid.levels.size());
     return space;
 }
