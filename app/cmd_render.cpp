@@ -105,14 +105,7 @@ int run_render(int argc, char** argv) {
                 1e6, "S")
         .option("--detail", "PX|off", "smallest shape feature, in pixels, that draws lines: curvature is taken at "
                 "that scale on the surface (default 12; off: the raw 1-ring estimate)",
-                [&](const std::string& v) {
-                    if (v == "off") return s.detail = 0, true;
-                    char* end = nullptr;
-                    const float x = std::strtof(v.c_str(), &end);
-                    if (end == v.c_str() || *end || !(x > 0 && x <= 1000)) return false;
-                    s.detail = x;
-                    return true;
-                },
+                word(s.detail, render::parse_detail),
                 "a size in pixels (0 < PX <= 1000) or off")
         .number("--line-width", s.line_width, "line width in pixels (default 2)", 0.1, 64, "PX")
         .option("--fade", "on|off", "fade weak suggestive contours (default on)", on_off(s.fade), "on or off")

@@ -17,14 +17,6 @@ namespace {
 // enough that a frame has few runs to draw.
 constexpr uint32_t kClusterFaces = 256;
 
-// One vertex as the shaders read it (shaders/mesh_attributes.glsl).
-struct GpuVertex {
-    glm::vec3 position, normal, d1, d2;
-    glm::vec2 curv;   // k1, k2
-    glm::vec4 dcurv;  // a, b, c, d
-    float unreliable;
-    glm::vec3 fine_normal;
-};
 
 // Edges used by exactly one face, as vertex index pairs. Only faces with
 // two or more boundary-flagged vertices can hold one, when flags exist.
@@ -52,13 +44,6 @@ std::vector<uint32_t> boundary_edges(const Mesh& mesh, const SurfaceFields& fiel
     return out;
 }
 
-void check_fields(const Mesh& mesh, const SurfaceFields& fields) {
-    const size_t n = mesh.vertex_count();
-    if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
-        fields.d2.size() != n || fields.dcurv.size() != n)
-        throw std::invalid_argument("MeshBuffers: surface fields do not match the mesh's vertex count");
-}
-
 void set_attribute(GLuint location, int components, size_t offset) {
     glEnableVertexAttribArray(location);
     glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, sizeof(GpuVertex),
@@ -83,7 +68,6 @@ void set_vertex_attributes() {
 MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                          const std::vector<glm::vec3>& fine_normals)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
-    check_fields(mesh, fields);
     bounds_ = bounding_sphere(mesh);
 
     glGenVertexArrays(1, &vao_);
@@ -123,39 +107,29 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
                               reinterpret_cast<const void*>(location * sizeof(glm::vec3)));
     }
     glBindVertexArray(0);
-    update_fields(mesh, fields, feature_size, fine_normals);
+    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));
 }
 
 void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                                 const std::vector<glm::vec3>& fine_normals) {
-    check_fields(mesh, fields);
-    const bool own_fine = !fine_normals.empty();
-    if (own_fine && fine_normals.size() != mesh.vertex_count())
-        throw std::invalid_argument("MeshBuffers: contour normals do not match the mesh's vertex count");
     if (mesh.vertex_count() != vertex_count_ || mesh.face_count() != face_count_)
         throw std::invalid_argument("MeshBuffers: new fields for a different mesh");
-    feature_size_ = feature_size;
-    for (size_t m = 0; m < ranges_.size(); ++m) ranges_[m] = robust_range(ColorMap(m), fields);
+    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));
+}
 
-    const size_t n = mesh.vertex_count();
-    std::vector<GpuVertex> vertices(n);
-    for (size_t i = 0; i < n; ++i) {
-        vertices[i] = {mesh.positions[i], fields.normals[i], fields.d1[i], fields.d2[i],
-                       {fields.k1[i], fields.k2[i]}, fields.dcurv[i], fields.unreliable(i) ? 1.0f : 0.0f,
-                       own_fine ? fine_normals[i] : fields.normals[i]};
-    }
+void MeshBuffers::upload(FieldUpload&& u) {
+    if (u.vertices.size() != vertex_count_) throw std::invalid_argument("MeshBuffers: upload for a different mesh");
+    feature_size_ = u.feature_size;
+    ranges_ = u.ranges;
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(vertices.size() * sizeof(GpuVertex)), vertices.data());
-    clusters_ = make_mesh_clusters(mesh, fields, face_clusters_, feature_size, fine_normals);
-
-    const SurfaceSamples hatch_seeds = sample_surface(mesh, fields, kHatchSamples);
-    surface_area_ = hatch_seeds.area;
-    std::vector<glm::vec3> samples;
-    samples.reserve(3 * hatch_seeds.points.size());
-    for (const SurfaceSample& p : hatch_seeds.points) samples.insert(samples.end(), {p.position, p.normal, p.direction});
-    hatch_samples_ = samples.size() / 3;
-    glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(samples.size() * sizeof(glm::vec3)), samples.data());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
+    clusters_ = std::move(u.clusters);
+    if (u.has_samples) {
+        surface_area_ = u.surface_area;
+        hatch_samples_ = u.samples.size() / 3;
+        glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
+        glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.samples.size() * sizeof(glm::vec3)), u.samples.data());
+    }
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 

@@ -9,6 +9,7 @@
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
 #include "render/cluster_culling.h"
+#include "render/field_upload.h"
 #include "render/gl.h"
 #include "render/render_settings.h"
 
@@ -29,6 +30,10 @@ public:
     // of n.v) and shading (empty: fields.normals).
     void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                        const std::vector<glm::vec3>& fine_normals = {});
+    // The same in two halves: prepare_field_upload (render/field_upload.h,
+    // any thread, with face_clusters()) then this, on the GL thread.
+    void upload(FieldUpload&& prepared);
+    const FaceClusters& face_clusters() const { return face_clusters_; }
     MeshBuffers(const MeshBuffers&) = delete;
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 

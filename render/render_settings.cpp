@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace kappa::render {
 
@@ -63,6 +64,14 @@ std::optional<LineSelection> parse_lines(const std::string& list) {
     // "none" together with a line kind is contradictory.
     if (std::find(seen.begin(), seen.end(), "none") != seen.end() && seen.size() > 1) return std::nullopt;
     return l;
+}
+
+std::optional<float> parse_detail(const std::string& s) {
+    if (s == "off") return 0.0f;
+    char* end = nullptr;
+    const float x = std::strtof(s.c_str(), &end);
+    if (s.empty() || end != s.c_str() + s.size() || !(x > 0 && x <= 1000)) return std::nullopt;
+    return x;
 }
 
 std::optional<glm::vec4> parse_background(const std::string& s) {

@@ -59,6 +59,8 @@ std::optional<ColorMap> parse_colormap(const std::string& s);
 std::optional<Hatching> parse_hatching(const std::string& s);
 // "contours,suggestive", "none"; nullopt for unknown or repeated words.
 std::optional<LineSelection> parse_lines(const std::string& list);
+// "off" (0) or a size in pixels in (0, 1000]: RenderSettings::detail.
+std::optional<float> parse_detail(const std::string& s);
 // "white", "transparent", "#rrggbb" (also "black").
 std::optional<glm::vec4> parse_background(const std::string& s);
 

@@ -18,6 +18,10 @@ void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, floa
     if (mesh_) mesh_->update_fields(mesh, fields, feature_size, fine_normals);
 }
 
+void Renderer::upload_fields(FieldUpload&& prepared) {
+    if (mesh_) mesh_->upload(std::move(prepared));
+}
+
 void Renderer::ensure_buffers(int width, int height, bool msaa) {
     const int samples = msaa ? 4 : 0;
     if (msaa && !surface_ms_fb_.matches(width, height, samples))

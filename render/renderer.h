@@ -36,6 +36,8 @@ public:
     // New fields for the mesh already uploaded (same vertices and faces).
     void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                        const std::vector<glm::vec3>& fine_normals = {});
+    // Fields prepared on another thread (render/field_upload.h).
+    void upload_fields(FieldUpload&& prepared);
     const MeshBuffers* mesh() const { return mesh_.get(); }
 
     // Draws one view into `target`. Without a mesh, clears to the background.

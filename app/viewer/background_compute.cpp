@@ -88,13 +88,50 @@ std::optional<BackgroundCompute::Result> BackgroundCompute::take() {
     return r;
 }
 
+void BackgroundCompute::request_view(ViewRequest request) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        pending_view_ = std::move(request);
+        view_busy_ = true;
+    }
+    wake_.notify_one();
+}
+
+std::optional<BackgroundCompute::ViewResult> BackgroundCompute::take_view() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<ViewResult> r = std::move(done_view_);
+    done_view_.reset();
+    return r;
+}
+
+BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest& r) {
+    ViewResult out;
+    out.mesh = r.mesh;
+    out.camera = r.camera;
+    out.height = r.height;
+    out.detail_px = r.detail_px;
+    const render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *r.fields, r.camera, r.height, r.detail_px);
+    out.upload = render::prepare_field_upload(*r.mesh, d.fields, d.feature_size, d.fine_normals, *r.clusters, false);
+    return out;
+}
+
 void BackgroundCompute::run() {
     for (;;) {
         Request request;
         {
             std::unique_lock<std::mutex> lock(mutex_);
-            wake_.wait(lock, [this] { return quit_ || pending_; });
+            wake_.wait(lock, [this] { return quit_ || pending_ || pending_view_; });
             if (quit_) return;
+            if (!pending_) {  // a view's fields; models first
+                ViewRequest view = std::move(*pending_view_);
+                pending_view_.reset();
+                lock.unlock();
+                ViewResult result = execute_view(view);
+                lock.lock();
+                done_view_ = std::move(result);
+                view_busy_ = bool(pending_view_);
+                continue;
+            }
             request = std::move(*pending_);
             pending_.reset();
             progress_ = 0;
@@ -127,14 +164,18 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             m.load_s = seconds_since(t);
         }
         const auto t = std::chrono::steady_clock::now();
-        m.fields = compute_surface_fields(*m.mesh, request.smoothing, &m.stages, [&](float f, const char* stage) {
-            progress_ = f;
-            set_stage(stage);
-        });
+        auto fields = std::make_shared<SurfaceFields>(
+            compute_surface_fields(*m.mesh, request.smoothing, &m.stages, [&](float f, const char* stage) {
+                progress_ = f;
+                set_stage(stage);
+            }));
         set_stage("feature size");
-        m.feature_size = feature_size(*m.mesh, m.fields);
+        m.feature_size = feature_size(*m.mesh, *fields);
+        set_stage("scale space");
+        m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields));
         m.fields_s = seconds_since(t);
-        m.summary = summarize(m.fields);
+        m.summary = summarize(*fields);
+        m.fields = std::move(fields);
         result.model = std::move(m);
     } catch (const std::bad_alloc&) {
         result.error = (request.path.empty() ? "built-in model" : request.path) + ": out of memory";

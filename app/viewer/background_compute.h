@@ -9,6 +9,9 @@
 #include "geometry/mesh.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/surface_fields.h"
+#include "render/camera.h"
+#include "render/detail_fields.h"
+#include "render/field_upload.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -30,8 +33,11 @@ struct ModelSummary {
 struct Model {
     std::string path;  // empty: the built-in model
     std::shared_ptr<const Mesh> mesh;
-    SurfaceFields fields;
-    float feature_size = 1;
+    std::shared_ptr<const SurfaceFields> fields;  // the per-vertex estimate (with the smoothing widths)
+    float feature_size = 1;                       // of `fields`
+    // The scale space for --detail; only the worker touches it after the
+    // first view (fitting its levels as zooming needs them).
+    std::shared_ptr<render::DetailSource> detail;
     SmoothingOptions smoothing;
     ModelSummary summary;
     StageTimes stages;
@@ -51,6 +57,29 @@ public:
     void load(const std::string& path, const SmoothingOptions& smoothing);
     // Recomputes the fields of an already loaded mesh with new widths.
     void recompute(const Model& model, const SmoothingOptions& smoothing);
+
+    // Fields at the detail scale of a new view, prepared for upload
+    // (render/field_upload.h), for the model already shown. A newer request
+    // replaces an older one not yet started.
+    struct ViewRequest {
+        std::shared_ptr<const Mesh> mesh;
+        std::shared_ptr<const SurfaceFields> fields;
+        std::shared_ptr<render::DetailSource> detail;
+        std::shared_ptr<const FaceClusters> clusters;
+        render::Camera camera;
+        int height = 1;
+        float detail_px = 0;
+    };
+    struct ViewResult {
+        std::shared_ptr<const Mesh> mesh;  // whose fields these are
+        render::FieldUpload upload;
+        render::Camera camera;
+        int height = 1;
+        float detail_px = 0;
+    };
+    void request_view(ViewRequest request);
+    std::optional<ViewResult> take_view();
+    bool view_busy() const { return view_busy_; }
 
     bool busy() const { return busy_; }
     float progress() const { return progress_; }  // of the running job, in [0, 1]
@@ -74,6 +103,7 @@ private:
     void submit(Request request);
     void run();
     Result execute(const Request& request);
+    ViewResult execute_view(const ViewRequest& request);
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
@@ -82,6 +112,9 @@ private:
     unsigned generation_ = 0;  // of the newest request
     bool quit_ = false;
     std::atomic<bool> busy_{false};
+    std::optional<ViewRequest> pending_view_;
+    std::optional<ViewResult> done_view_;
+    std::atomic<bool> view_busy_{false};
     std::atomic<float> progress_{0};
     std::string stage_;  // guarded by mutex_
     std::thread worker_;  // last: starts once every member above exists

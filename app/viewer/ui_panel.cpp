@@ -37,6 +37,14 @@ void lines_section(render::RenderSettings& s) {
     ImGui::Checkbox("boundaries (B)", &s.lines.boundaries);
     ImGui::SliderFloat("threshold", &s.sc_threshold, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("suggestive contours where Dw kr > s / fs^2 (dimensionless s)");
+    bool detail_on = s.detail > 0;
+    if (ImGui::Checkbox("##detail on", &detail_on)) s.detail = detail_on ? 12.0f : 0.0f;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("off: the raw 1-ring estimate (the paper's lines)");
+    ImGui::SameLine();
+    if (detail_on) ImGui::SliderFloat("detail", &s.detail, 1.0f, 64.0f, "%.1f px", ImGuiSliderFlags_Logarithmic);
+    else ImGui::TextUnformatted("detail off");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("lines follow the surface smoothed at this scale on screen: smaller features draw none");
     ImGui::SliderFloat("line width", &s.line_width, 0.5f, 8.0f, "%.1f px");
     ImGui::Checkbox("fade weak lines (G)", &s.fade);
     ImGui::ColorEdit3("line colour", &s.line_color.x, ImGuiColorEditFlags_NoInputs);
@@ -80,9 +88,9 @@ bool smoothing_section(SmoothingOptions& sm, const Model* model, bool computing,
     width("curvature", sm.curvature);
     width("derivative C", sm.dcurv);
     ImGui::TextDisabled("Gaussian sigma, fs = %.4g model units", fs);
-    if (model && model->fields.smoothing.automatic) {
-        const SmoothingOptions& used = model->fields.smoothing;
-        ImGui::TextDisabled("noise %.3g edges; used %.3f, %.3f, %.3f fs", model->fields.noise.relative,
+    if (model && model->fields->smoothing.automatic) {
+        const SmoothingOptions& used = model->fields->smoothing;
+        ImGui::TextDisabled("noise %.3g edges; used %.3f, %.3f, %.3f fs", model->fields->noise.relative,
                             used.normals / fs, used.curvature / fs, used.dcurv / fs);
     }
     if (computing) {

@@ -70,6 +70,8 @@ const std::map<std::string, Setter>& setters() {
                        if (d) s.settings.light_dir = *d;
                        return bool(d);
                    }}},
+        {"detail", word<float>("a size in pixels (0 < PX <= 1000) or off", render::parse_detail,
+                               [](ViewState& s) -> auto& { return s.settings.detail; })},
         {"colorbar", on_off([](ViewState& s) -> auto& { return s.settings.colorbar; })},
         {"fade", on_off([](ViewState& s) -> auto& { return s.settings.fade; })},
         {"msaa", on_off([](ViewState& s) -> auto& { return s.settings.msaa; })},

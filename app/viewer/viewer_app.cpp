@@ -10,6 +10,8 @@
 #include <imgui.h>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -91,6 +93,7 @@ int ViewerApp::run() {
     while (!window_->should_close()) {
         wait_for_events();
         adopt_results();
+        request_view_fields();
         if (options_.scripted() && !script_step()) break;
         draw_frame();
     }
@@ -129,18 +132,69 @@ void ViewerApp::adopt_results() {
     model_ = std::move(result->model);
     // A big new mesh shows up at once without multisampling; the frame after is full quality.
     quick_frame_ = model_->mesh->face_count() >= kQuickFirstFrameFaces;
-    const auto t = std::chrono::steady_clock::now();
-    renderer_->set_mesh(*model_->mesh, model_->fields, model_->feature_size);
-    upload_s_ = float(seconds_since(t));
     if (new_mesh) {
+        const render::BoundingSphere bounds = render::bounding_sphere(*model_->mesh);
         if (have_view_)
-            orbit_.set_pivot(renderer_->mesh()->bounds().center);
+            orbit_.set_pivot(bounds.center);
         else
-            orbit_.reset(renderer_->mesh()->bounds(), drawing_area().size);
+            orbit_.reset(bounds, drawing_area().size);
         have_view_ = false;  // a view file applies to the first mesh only
         window_->set_title("kappa - " + (model_->path.empty() ? std::string("built-in model") : model_->path));
         panel_.open_path = model_->path;
     }
+    // The first view's detail fields are made here, so the first frame is
+    // already right; later views get theirs from the worker.
+    const auto t = std::chrono::steady_clock::now();
+    shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
+    if (shown_.detail > 0) {
+        const render::DetailFields d = render::detail_fields(*model_->mesh, *model_->detail, *model_->fields,
+                                                             shown_.camera, shown_.height, shown_.detail);
+        renderer_->set_mesh(*model_->mesh, d.fields, d.feature_size, d.fine_normals);
+    } else {
+        renderer_->set_mesh(*model_->mesh, *model_->fields, model_->feature_size);
+    }
+    face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
+    upload_s_ = float(seconds_since(t));
+}
+
+float ViewerApp::effective_detail() const {
+    const SmoothingOptions& w = state_.smoothing;
+    return w.normals > 0 || w.curvature > 0 || w.dcurv > 0 ? 0.0f : state_.settings.detail;
+}
+
+// The fields follow the view's scale: after a zoom (pixel size at the pivot
+// changed by more than 10%), a turn of more than 10 degrees, a new window
+// height or detail setting, the worker prepares new ones (never while
+// dragging: the frame after the release asks).
+void ViewerApp::request_view_fields() {
+    if (!model_ || !renderer_->mesh()) return;
+    if (auto done = compute_.take_view()) {
+        if (done->mesh == model_->mesh && done->detail_px == effective_detail()) {
+            renderer_->upload_fields(std::move(done->upload));
+            shown_ = {done->detail_px, done->camera, done->height};
+            redraw_frames_ = 2;
+        }
+    }
+    if (drag_button_ >= 0 || compute_.view_busy() || compute_.busy()) return;
+    const float detail = effective_detail();
+    const render::Camera now = camera();
+    const int height = drawing_area().pixels.y;
+    if (detail == 0) {
+        if (shown_.detail != 0) {
+            renderer_->update_fields(*model_->mesh, *model_->fields, model_->feature_size);
+            shown_ = {0, now, height};
+        }
+        return;
+    }
+    const glm::vec3 pivot = orbit_.pivot();
+    const auto pixel_at_pivot = [&](const render::Camera& c, int h) {
+        return glm::length(c.eye() - pivot) * std::tan(glm::radians(0.5f * c.fov_y_deg)) / float(std::max(h, 1));
+    };
+    const float ratio = pixel_at_pivot(now, height) / pixel_at_pivot(shown_.camera, shown_.height);
+    const float turn = glm::dot(glm::normalize(now.eye() - pivot), glm::normalize(shown_.camera.eye() - pivot));
+    if (detail == shown_.detail && ratio < 1.1f && ratio > 1.0f / 1.1f && turn > std::cos(glm::radians(10.0f)))
+        return;
+    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail});
 }
 
 void ViewerApp::draw_frame() {
@@ -157,6 +211,7 @@ void ViewerApp::draw_frame() {
     // (software rendering), draw without multisampling; the still image
     // after the release is full quality again.
     render::RenderSettings settings = state_.settings;
+    settings.detail = shown_.detail;  // the scale of the fields on the GPU (line occlusion tolerance)
     const bool reduced =
         panel_.fast_while_moving && settings.msaa && ((drag_button_ >= 0 && full_quality_slow_) || quick_frame_);
     if (reduced) settings.msaa = false;

@@ -56,6 +56,8 @@ private:
     void wait_for_events();
     void draw_frame();
     void adopt_results();
+    float effective_detail() const;  // the detail setting, 0 while explicit smoothing widths override it
+    void request_view_fields();      // new detail fields when the view's scale changed
     // The drawing sits right of the panel: its left edge and size in window
     // coordinates (as the cursor), and its size in framebuffer pixels.
     struct Area {
@@ -91,6 +93,13 @@ private:
     std::optional<Model> model_;
     render::OrbitCamera orbit_;
     bool have_view_ = false;  // the camera was set (a view file): keep it when the mesh arrives
+    std::shared_ptr<const FaceClusters> face_clusters_;  // of the uploaded mesh, for view fields
+    // The view the uploaded fields were computed for (detail 0: the raw fields).
+    struct ShownFields {
+        float detail = 0;
+        render::Camera camera;
+        int height = 0;
+    } shown_;
 
     // Mouse drag in progress: GLFW button number, or -1.
     int drag_button_ = -1;

@@ -1,0 +1,41 @@
+#include "render/field_upload.h"
+
+#include "geometry/surface_samples.h"
+#include "render/colormap.h"
+#include "render/mesh_buffers.h"
+
+#include <stdexcept>
+
+namespace kappa::render {
+
+FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
+                                 bool hatch_samples) {
+    const size_t n = mesh.vertex_count();
+    if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
+        fields.d2.size() != n || fields.dcurv.size() != n)
+        throw std::invalid_argument("MeshBuffers: surface fields do not match the mesh's vertex count");
+    const bool own_fine = !fine_normals.empty();
+    if (own_fine && fine_normals.size() != n)
+        throw std::invalid_argument("MeshBuffers: fine normals do not match the mesh's vertex count");
+
+    FieldUpload u;
+    u.feature_size = feature_size;
+    for (size_t m = 0; m < u.ranges.size(); ++m) u.ranges[m] = robust_range(ColorMap(m), fields);
+    u.vertices.resize(n);
+    for (size_t i = 0; i < n; ++i)
+        u.vertices[i] = {mesh.positions[i], fields.normals[i], fields.d1[i], fields.d2[i],
+                         {fields.k1[i], fields.k2[i]}, fields.dcurv[i], fields.unreliable(i) ? 1.0f : 0.0f,
+                         own_fine ? fine_normals[i] : fields.normals[i]};
+    u.clusters = make_mesh_clusters(mesh, fields, clusters, feature_size, fine_normals);
+    if (hatch_samples) {
+        const SurfaceSamples seeds = sample_surface(mesh, fields, MeshBuffers::kHatchSamples);
+        u.has_samples = true;
+        u.surface_area = seeds.area;
+        u.samples.reserve(3 * seeds.points.size());
+        for (const SurfaceSample& p : seeds.points) u.samples.insert(u.samples.end(), {p.position, p.normal, p.direction});
+    }
+    return u;
+}
+
+}  // namespace kappa::render

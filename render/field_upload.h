@@ -1,0 +1,49 @@
+// The CPU half of putting curvature fields on the GPU: the interleaved
+// vertex records, the culling bounds of the contour pass, colour-map ranges
+// and (optionally) hatching seeds. No OpenGL: it can be built on a worker
+// thread (the viewer prepares fields at a new scale there) and handed to
+// MeshBuffers::upload on the GL thread.
+#pragma once
+
+#include "geometry/face_clusters.h"
+#include "geometry/mesh.h"
+#include "geometry/surface_fields.h"
+#include "render/cluster_culling.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <vector>
+
+namespace kappa::render {
+
+// One vertex as the shaders read it (shaders/mesh_attributes.glsl).
+struct GpuVertex {
+    glm::vec3 position, normal, d1, d2;
+    glm::vec2 curv;   // k1, k2
+    glm::vec4 dcurv;  // a, b, c, d
+    float unreliable;
+    glm::vec3 fine_normal;  // pixel-scale normal: contours and shading
+};
+
+struct FieldUpload {
+    std::vector<GpuVertex> vertices;
+    MeshClusters clusters;
+    std::array<float, 7> ranges{};  // robust colour-map range per ColorMap
+    float feature_size = 1;
+    bool has_samples = false;        // false: keep the hatching seeds already uploaded
+    std::vector<glm::vec3> samples;  // position, normal, direction per hatching seed
+    double surface_area = 0;
+};
+
+// fields: one entry per vertex; fine_normals: empty (use fields.normals) or
+// one per vertex; clusters: the face clusters the triangles were uploaded
+// in; hatch_samples: also draw new hatching seeds (262144, slow on big meshes).
+// Throws std::invalid_argument when sizes do not match the mesh.
+FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
+                                 bool hatch_samples);
+
+}  // namespace kappa::render
