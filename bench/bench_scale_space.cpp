@@ -1,5 +1,5 @@
 // Cost of the scale space (geometry/scale/scale_space.h) next to the raw
-// estimate it starts from: pyramid, level fits, and per-vertex fields for
+// estimate it starts from: clusters and fits per level, and per-vertex fields for
 // one view. Medians of repeated runs.
 //
 //   build/bench_scale_space [MESH] [--runs N] [--threads N] [--detail PX]
@@ -52,27 +52,31 @@ int main(int argc, char** argv) {
     ScaleSpace space;
     std::vector<float> sigma;
     bench::time_it("raw fields", runs, [&] { raw = compute_surface_fields(mesh); });
-    bench::time_it("cluster pyramid", runs, [&] {
-        space.pyramid = build_cluster_pyramid(mesh, raw.point_areas, raw.normals, 1e-3f, 1.0f);
-    });
-    bench::time_it("scale space", runs, [&] { space = build_scale_space(mesh, raw); });
-    bench::time_it("fit all levels", runs, [&] { space = build_scale_space(mesh, raw); fit_all_levels(space); });
-    std::printf("  %zu levels:", space.levels.size());
-    for (const auto& l : space.pyramid.levels) std::printf(" %zu", l.size());
-    std::printf(" clusters\n");
+    space = build_scale_space(mesh);
     for (size_t l = 0; l < space.levels.size(); ++l) {
-        char label[32];
-        std::snprintf(label, sizeof label, "fit level %zu", l);
+        char label[48];
+        std::snprintf(label, sizeof label, "level %zu clusters", l);
         bench::time_it(label, runs, [&] {
-            space.levels[l] = {};
-            fit_all_levels(space);
+            space.clusters[l] = build_surface_clusters(mesh, raw.point_areas, raw.normals, space.origin,
+                                                       space.level_scale(l));
         });
     }
+    std::printf("  %zu levels:", space.levels.size());
+    for (const auto& l : space.clusters) std::printf(" %zu", l.size());
+    std::printf(" clusters\n");
+    bench::time_it("build and fit all", runs, [&] {
+        space = build_scale_space(mesh);
+        fit_all_levels(mesh, space, raw);
+    });
     bench::time_it("pixel sizes", runs, [&] {
         sigma = pixel_sizes(mesh, view, fov, 768);
         for (float& s : sigma) s *= detail;
     });
-    bench::time_it("fields at scale", runs, [&] { (void)fields_at_scale(mesh, space, raw, sigma); });
+    bench::time_it("fields at scale (fresh)", runs, [&] {
+        space = build_scale_space(mesh);
+        (void)fields_at_scale(mesh, space, raw, sigma);
+    });
+    bench::time_it("fields at scale (fitted)", runs, [&] { (void)fields_at_scale(mesh, space, raw, sigma); });
     bench::time_it("normals at scale", runs, [&] { (void)normals_at_scale(mesh, space, raw, sigma); });
     return 0;
 }

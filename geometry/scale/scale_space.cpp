@@ -197,51 +197,51 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
         if (ldlt_solve_tridiagonal<4>(diag, off, rhs, x, kFitTolerance))
             out.dcurv[p] = embed(glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3])), u, v);
     }, 1024);
+
+    // What vertices read, one record per cluster (fields_at_scale).
+    out.sample.resize(n);
+    for (size_t p = 0; p < n; ++p)
+        out.sample[p] = {level.centroid[p], out.valid[p] ? level.area[p] : 0.0f, out.normal[p], 0.0f,
+                         out.curvature[p], out.dcurv[p]};
     return out;
 }
 
-// One level's share of a vertex's fields: the clusters it takes values
-// from and their weights (the vertex's cluster and the adjacent ones,
-// weighted by area x (1 - (d / R)^2)^2, R = 1.25 cells).
-struct LevelSample {
-    static constexpr int kMax = 48;
-    uint32_t cluster[kMax];
-    float weight[kMax];
-    int count = 0;
-    glm::vec3 normal{0.0f};  // unit weighted mean normal
+// One level's value at a vertex: the kernel-weighted mean over the
+// vertex's cluster and the adjacent ones, weight area x (1 - (d / R)^2)^2
+// with R = 1.25 cells. Sums; normal() and mean() finish them.
+struct LevelValue {
+    float weight = 0;
+    glm::vec3 normal_sum{0.0f};
+    Sym3 curvature;
+    SymCubic3 dcurv;
 };
 
-bool sample_level(const ClusterLevel& level, const ScaleLevelFields& fields, uint32_t vertex, const glm::vec3& p,
-                  LevelSample& s) {
+// Returns false when no cluster around the vertex has a fit.
+template <bool kTensors>
+bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint32_t vertex, const glm::vec3& p,
+                 LevelValue& out) {
     const uint32_t home = level.vertex_cluster[vertex];
     const float r = kPushRadius * level.cell, inv_r2 = 1.0f / (r * r);
-    s.count = 0;
-    float wsum = 0;
-    glm::vec3 nsum(0.0f);
-    auto take = [&](uint32_t q) {
-        if (!fields.valid[q] || s.count == LevelSample::kMax) return;
-        const glm::vec3 d = level.centroid[q] - p;
-        const float w = kernel(level.area[q], glm::dot(d, d), inv_r2);
-        if (!(w > 0)) return;
-        s.cluster[s.count] = q;
-        s.weight[s.count++] = w;
-        wsum += w;
-        nsum += w * fields.normal[q];
+    out = LevelValue{};
+    auto take = [&](uint32_t q, float w) {
+        const ScaleLevelFields::Sample& s = fields.sample[q];
+        out.weight += w;
+        out.normal_sum += w * s.normal;
+        if (kTensors) {
+            add_scaled(out.curvature, w, s.curvature);
+            add_scaled(out.dcurv, w, s.dcurv);
+        }
     };
-    take(home);
-    for (uint32_t k = level.adj_offsets[home]; k < level.adj_offsets[home + 1]; ++k) take(level.adj[k]);
-    if (s.count == 0 && fields.valid[home]) {  // a vertex far out in its cell: its cluster alone
-        s.cluster[0] = home;
-        s.weight[0] = wsum = 1;
-        s.count = 1;
-        nsum = fields.normal[home];
-    }
-    if (s.count == 0) return false;
-    for (int i = 0; i < s.count; ++i) s.weight[i] /= wsum;
-    const float len = glm::length(nsum);
-    if (!(len > 0) || !std::isfinite(len)) return false;
-    s.normal = nsum / len;
-    return true;
+    auto weigh = [&](uint32_t q) {
+        const ScaleLevelFields::Sample& s = fields.sample[q];
+        const glm::vec3 d = s.centroid - p;
+        return kernel(s.area, glm::dot(d, d), inv_r2);  // area 0 where the fit failed
+    };
+    if (const float w = weigh(home); w > 0) take(home, w);
+    for (uint32_t k = level.adj_offsets[home]; k < level.adj_offsets[home + 1]; ++k)
+        if (const float w = weigh(level.adj[k]); w > 0) take(level.adj[k], w);
+    if (!(out.weight > 0) && fields.valid[home]) take(home, 1.0f);  // far out in its cell: its cluster alone
+    return out.weight > 0 && glm::length(out.normal_sum) > 0;
 }
 
 // Level coordinate of a scale: -1 for the raw estimate, l for level l,
@@ -258,13 +258,14 @@ float level_coordinate(const ScaleSpace& space, float sigma) {
 struct VertexBlend {
     int lo = -1;
     float share[2] = {1, 0};
-    LevelSample samples[2];
+    LevelValue value[2];
     bool use[2] = {false, false};  // false: the raw estimate stands in for that level
     glm::vec3 normal{0.0f};        // unit blended normal
 };
 
 // Fills `b` for vertex v at scale sigma; returns false where the raw fields
 // are kept as they are (flagged vertex, sigma at or below the raw scale).
+template <bool kTensors>
 bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw, size_t v, float sigma,
                   VertexBlend& b) {
     if (space.levels.empty() || raw.unreliable(v) || !(sigma > space.raw_scale)) return false;
@@ -279,10 +280,10 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
         b.use[i] = false;
         if (b.share[i] <= 0.0f) continue;
         if (l >= 0 && space.levels[size_t(l)].fitted() &&
-            sample_level(space.pyramid.levels[size_t(l)], space.levels[size_t(l)], uint32_t(v), mesh.positions[v],
-                         b.samples[i])) {
+            level_value<kTensors>(space.clusters[size_t(l)], space.levels[size_t(l)], uint32_t(v),
+                                  mesh.positions[v], b.value[i])) {
             b.use[i] = true;
-            n += b.share[i] * b.samples[i].normal;
+            n += b.share[i] * glm::normalize(b.value[i].normal_sum);
         } else {
             n += b.share[i] * raw.normals[v];
         }
@@ -293,24 +294,30 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
     return true;
 }
 
-// Fits the levels that scales in [lo, hi] blend from.
-void fit_levels_for(ScaleSpace& space, float lo, float hi) {
+// Builds and fits the levels that scales in [lo, hi] blend from.
+void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, float lo, float hi) {
     if (space.levels.empty() || !(hi > space.raw_scale)) return;
     const int first = std::max(0, int(std::floor(level_coordinate(space, lo))));
     const int last = int(std::ceil(level_coordinate(space, hi)));
-    for (int l = first; l <= last && l < int(space.levels.size()); ++l)
-        if (!space.levels[size_t(l)].fitted()) space.levels[size_t(l)] = fit_level(space.pyramid.levels[size_t(l)]);
+    for (int l = first; l <= last && l < int(space.levels.size()); ++l) {
+        const size_t i = size_t(l);
+        if (space.levels[i].fitted()) continue;
+        if (!space.clusters[i].built())
+            space.clusters[i] =
+                build_surface_clusters(mesh, raw.point_areas, raw.normals, space.origin, space.level_scale(i));
+        space.levels[i] = fit_level(space.clusters[i]);
+    }
 }
 
-void fit_levels_for(ScaleSpace& space, const std::vector<float>& sigma) {
+void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, const std::vector<float>& sigma) {
     if (sigma.empty()) return;
     const auto [lo, hi] = std::minmax_element(sigma.begin(), sigma.end());
-    fit_levels_for(space, *lo, *hi);
+    fit_levels_for(mesh, space, raw, *lo, *hi);
 }
 
 }  // namespace
 
-ScaleSpace build_scale_space(const Mesh& mesh, const SurfaceFields& raw) {
+ScaleSpace build_scale_space(const Mesh& mesh) {
     ScaleSpace space;
     const float h = mean_edge_length(mesh);
     space.raw_scale = 0.5f * h;
@@ -321,35 +328,37 @@ ScaleSpace build_scale_space(const Mesh& mesh, const SurfaceFields& raw) {
         hi = glm::max(hi, p);
     }
     const float radius = 0.5f * glm::length(hi - lo);
-    space.pyramid = build_cluster_pyramid(mesh, raw.point_areas, raw.normals, 1.5f * h, radius);
-    space.levels.resize(space.pyramid.levels.size());
+    space.first_cell = 1.5f * h;
+    space.origin = lo;
+    size_t levels = 1;
+    while (space.level_scale(levels) <= radius && levels < 30) ++levels;
+    space.clusters.resize(levels);
+    space.levels.resize(levels);
     return space;
 }
 
-void fit_all_levels(ScaleSpace& space) { fit_levels_for(space, space.raw_scale, space.max_scale()); }
+void fit_all_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw) {
+    fit_levels_for(mesh, space, raw, space.raw_scale, space.max_scale());
+}
 
 SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                               const std::vector<float>& sigma) {
-    fit_levels_for(space, sigma);
+    fit_levels_for(mesh, space, raw, sigma);
     SurfaceFields out = raw;
     parallel_for(mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
-        if (!blend_vertex(mesh, space, raw, v, sigma[v], b)) return;
+        if (!blend_vertex<true>(mesh, space, raw, v, sigma[v], b)) return;
         Sym3 tensor;
         SymCubic3 dcurv;
         for (int i = 0; i < 2; ++i) {
             if (b.share[i] <= 0.0f) continue;
-            if (!b.use[i]) {
+            if (b.use[i]) {
+                const float w = b.share[i] / b.value[i].weight;
+                add_scaled(tensor, w, b.value[i].curvature);
+                add_scaled(dcurv, w, b.value[i].dcurv);
+            } else {
                 add_scaled(tensor, b.share[i], embed(Tensor2{raw.k1[v], 0, raw.k2[v]}, raw.d1[v], raw.d2[v]));
                 add_scaled(dcurv, b.share[i], embed(raw.dcurv[v], raw.d1[v], raw.d2[v]));
-                continue;
-            }
-            const ScaleLevelFields& f = space.levels[size_t(b.lo + i)];
-            for (int k = 0; k < b.samples[i].count; ++k) {
-                const uint32_t q = b.samples[i].cluster[k];
-                const float w = b.share[i] * b.samples[i].weight[k];
-                add_scaled(tensor, w, f.curvature[q]);
-                add_scaled(dcurv, w, f.dcurv[q]);
             }
         }
         const glm::vec3 n = b.normal;
@@ -364,11 +373,11 @@ SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const Surface
 
 std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                                         const std::vector<float>& sigma) {
-    fit_levels_for(space, sigma);
+    fit_levels_for(mesh, space, raw, sigma);
     std::vector<glm::vec3> out = raw.normals;
     parallel_for(mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
-        if (blend_vertex(mesh, space, raw, v, sigma[v], b)) out[v] = b.normal;
+        if (blend_vertex<false>(mesh, space, raw, v, sigma[v], b)) out[v] = b.normal;
     }, 2048);
     return out;
 }

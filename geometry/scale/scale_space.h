@@ -6,7 +6,8 @@
 // scribbles. Following the idea of Ni et al. 2006 ("Multi-scale line
 // drawings from 3D meshes": precompute fields at several scales, pick one
 // per vertex from its projected pixel size), each level of a cluster
-// pyramid (cluster_pyramid.h) gets its own fields, estimated on the
+// of clusters (surface_clusters.h: pieces of the mesh in grid cells whose
+// size doubles from level to level) gets its own fields, estimated on the
 // clusters as the paper does on faces but over a Gaussian neighbourhood:
 //   1. normal: the clusters' area-weighted mean normals, averaged with
 //      weights A_Q (1 - d^2 / R^2)^2 over the clusters Q within R = 2.5
@@ -26,12 +27,13 @@
 // vertex's blended tangent plane.
 #pragma once
 
-#include "cluster_pyramid.h"
+#include "surface_clusters.h"
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
 #include "geometry/tensor_frames.h"
 #include "tensor3.h"
 
+#include <cmath>
 #include <vector>
 
 namespace kappa {
@@ -41,31 +43,43 @@ struct ScaleLevelFields {
     std::vector<Sym3> curvature;    // II as a tensor of 3D space (tensor3.h)
     std::vector<SymCubic3> dcurv;   // C as a tensor of 3D space
     std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
+    // The same, packed per cluster for the per-vertex blend (area 0 where
+    // not valid).
+    struct Sample {
+        glm::vec3 centroid;
+        float area;
+        glm::vec3 normal;
+        float pad;
+        Sym3 curvature;
+        SymCubic3 dcurv;
+    };
+    std::vector<Sample> sample;
 
     bool fitted() const { return !valid.empty(); }
 };
 
-// Levels are fitted when first needed: a drawing at one scale pays for the
-// one or two levels it blends.
+// Levels are clustered and fitted when first needed: a drawing at one scale
+// pays for the one or two levels it blends.
 struct ScaleSpace {
-    float raw_scale = 0;  // the scale the raw per-vertex estimate stands for
-    ClusterPyramid pyramid;
-    std::vector<ScaleLevelFields> levels;  // one per pyramid level
+    float raw_scale = 0;    // the scale the raw per-vertex estimate stands for
+    float first_cell = 0;   // cell of level 0; level l has first_cell * 2^l
+    glm::vec3 origin{0};    // where the grids' cells are aligned
+    std::vector<ClusterLevel> clusters;    // one per level (built on demand)
+    std::vector<ScaleLevelFields> levels;  // one per level (fitted on demand)
 
     bool empty() const { return levels.empty(); }
-    float level_scale(size_t level) const { return pyramid.levels[level].cell; }
+    float level_scale(size_t level) const { return std::ldexp(first_cell, int(level)); }
     // Largest scale available (raw_scale when there are no levels).
     float max_scale() const { return empty() ? raw_scale : level_scale(levels.size() - 1); }
 };
 
-// Builds the pyramid (first cell 2 mean edge lengths, up to the bounding
-// radius), with no level fitted yet. raw: compute_surface_fields' output for
-// this mesh (its normals and areas seed the pyramid).
-ScaleSpace build_scale_space(const Mesh& mesh, const SurfaceFields& raw);
+// Sets up the levels (first cell 1.5 mean edge lengths, doubling up to the
+// bounding radius), none built yet: cheap.
+ScaleSpace build_scale_space(const Mesh& mesh);
 
-// Fits every level (the viewer does this in the background, so zooming
-// never waits).
-void fit_all_levels(ScaleSpace& space);
+// Builds and fits every level. raw: compute_surface_fields' output for the
+// mesh (its normals and areas seed the clusters).
+void fit_all_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw);
 
 // Per-vertex fields at scale sigma[v] (model units), fitting the levels
 // they need first. sigma[v] <= raw_scale gives the raw fields exactly;
