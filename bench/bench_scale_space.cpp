@@ -8,6 +8,12 @@
 // view frames the mesh from +z at 1024x768 (kappa render's default camera).
 #include "time_it.h"
 
+#include "geometry/feature_size.h"
+#include "geometry/io/ply_io.h"
+#include "geometry/scale/auto_smoothing.h"
+#include "geometry/scale/noise_level.h"
+#include "geometry/vertex_faces.h"
+
 #include "geometry/io/mesh_io.h"
 #include "geometry/parallel.h"
 #include "geometry/scale/pixel_scale.h"
@@ -17,6 +23,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -28,7 +35,7 @@ using namespace kappa;
 int main(int argc, char** argv) {
     std::string path = std::string(KAPPA_SOURCE_DIR) + "/../shared/meshes/bunny-1M.ply";
     int runs = 7;
-    float detail = 4;
+    float detail = 12;  // RenderSettings::detail
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--runs") && i + 1 < argc) runs = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) set_thread_count(unsigned(std::atoi(argv[++i])));
@@ -78,5 +85,43 @@ int main(int argc, char** argv) {
     });
     bench::time_it("fields at scale (fitted)", runs, [&] { (void)fields_at_scale(mesh, space, raw, sigma); });
     bench::time_it("normals at scale", runs, [&] { (void)normals_at_scale(mesh, space, raw, sigma); });
+
+    // The budget of issue 9: the fields of kappa render's default view at the
+    // default detail (what render/detail_fields.cpp does, without GL), against
+    // what `kappa curvature MESH -o OUT.ply` does; alternating, same process.
+    const std::string out_ply = "/tmp/kappa-bench-scale-space.ply";
+    std::vector<double> with_detail, curvature_command, ratio;
+    auto seconds = [](auto&& body) {
+        const auto t0 = std::chrono::steady_clock::now();
+        body();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    for (int r = 0; r < runs + 1; ++r) {
+        const double a = seconds([&] {
+            const Mesh m = load_mesh(path);
+            const SurfaceFields f = compute_surface_fields(m);
+            ScaleSpace s = build_scale_space(m);
+            const NoiseLevel noise = estimate_noise_level(m, build_vertex_faces(m), f.normals);
+            const float floor = choose_smoothing_widths(noise).normals;
+            std::vector<float> sg = pixel_sizes(m, view, fov, 768);
+            const std::vector<glm::vec3> fine = normals_at_scale(m, s, f, std::vector<float>(m.vertex_count(), 0.0f));
+            for (float& x : sg) x = std::max(x * detail, floor);
+            const SurfaceFields at = fields_at_scale(m, s, f, sg);
+            (void)feature_size(m, at);
+        });
+        const double b = seconds([&] {
+            const Mesh m = load_mesh(path);
+            const SurfaceFields f = compute_surface_fields(m);
+            write_ply(out_ply, m, f, true);
+        });
+        if (r == 0) continue;  // warm-up
+        with_detail.push_back(a * 1e3);
+        curvature_command.push_back(b * 1e3);
+        ratio.push_back(a / b);
+    }
+    std::remove(out_ply.c_str());
+    std::printf("load + fields + detail fields (default view): median %.1f ms\n", bench::median(with_detail));
+    std::printf("load + fields + write PLY (kappa curvature):  median %.1f ms\n", bench::median(curvature_command));
+    std::printf("ratio, median of pairs: %.2f\n", bench::median(ratio));
     return 0;
 }

@@ -199,10 +199,12 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
     }, 1024);
 
     // What vertices read, one record per cluster (fields_at_scale).
-    out.sample.resize(n);
-    for (size_t p = 0; p < n; ++p)
-        out.sample[p] = {level.centroid[p], out.valid[p] ? level.area[p] : 0.0f, out.normal[p], 0.0f,
-                         out.curvature[p], out.dcurv[p]};
+    out.place.resize(n);
+    out.value.resize(n);
+    for (size_t p = 0; p < n; ++p) {
+        out.place[p] = glm::vec4(level.centroid[p], out.valid[p] ? level.area[p] : 0.0f);
+        out.value[p] = {out.normal[p], out.curvature[p], out.dcurv[p]};
+    }
     return out;
 }
 
@@ -224,7 +226,7 @@ bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint
     const float r = kPushRadius * level.cell, inv_r2 = 1.0f / (r * r);
     out = LevelValue{};
     auto take = [&](uint32_t q, float w) {
-        const ScaleLevelFields::Sample& s = fields.sample[q];
+        const ScaleLevelFields::Value& s = fields.value[q];
         out.weight += w;
         out.normal_sum += w * s.normal;
         if (kTensors) {
@@ -233,9 +235,9 @@ bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint
         }
     };
     auto weigh = [&](uint32_t q) {
-        const ScaleLevelFields::Sample& s = fields.sample[q];
-        const glm::vec3 d = s.centroid - p;
-        return kernel(s.area, glm::dot(d, d), inv_r2);  // area 0 where the fit failed
+        const glm::vec4& s = fields.place[q];
+        const glm::vec3 d = glm::vec3(s) - p;
+        return kernel(s.w, glm::dot(d, d), inv_r2);  // area 0 where the fit failed
     };
     if (const float w = weigh(home); w > 0) take(home, w);
     for (uint32_t k = level.adj_offsets[home]; k < level.adj_offsets[home + 1]; ++k)
@@ -299,14 +301,17 @@ void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& ra
     if (space.levels.empty() || !(hi > space.raw_scale)) return;
     const int first = std::max(0, int(std::floor(level_coordinate(space, lo))));
     const int last = int(std::ceil(level_coordinate(space, hi)));
-    for (int l = first; l <= last && l < int(space.levels.size()); ++l) {
-        const size_t i = size_t(l);
-        if (space.levels[i].fitted()) continue;
+    std::vector<size_t> todo;
+    for (int l = first; l <= last && l < int(space.levels.size()); ++l)
+        if (!space.levels[size_t(l)].fitted()) todo.push_back(size_t(l));
+    // Clustering runs on one thread per level: build the levels side by side.
+    parallel_for(todo.size(), [&](size_t k) {
+        const size_t i = todo[k];
         if (!space.clusters[i].built())
             space.clusters[i] =
                 build_surface_clusters(mesh, raw.point_areas, raw.normals, space.origin, space.level_scale(i));
-        space.levels[i] = fit_level(space.clusters[i]);
-    }
+    }, 1);
+    for (size_t i : todo) space.levels[i] = fit_level(space.clusters[i]);
 }
 
 void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, const std::vector<float>& sigma) {

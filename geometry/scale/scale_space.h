@@ -33,6 +33,8 @@
 #include "geometry/tensor_frames.h"
 #include "tensor3.h"
 
+#include <glm/vec4.hpp>
+
 #include <cmath>
 #include <vector>
 
@@ -43,17 +45,15 @@ struct ScaleLevelFields {
     std::vector<Sym3> curvature;    // II as a tensor of 3D space (tensor3.h)
     std::vector<SymCubic3> dcurv;   // C as a tensor of 3D space
     std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
-    // The same, packed per cluster for the per-vertex blend (area 0 where
-    // not valid).
-    struct Sample {
-        glm::vec3 centroid;
-        float area;
+    // The same, packed per cluster for the per-vertex blend: where (centroid,
+    // and area or 0 where not valid) and what.
+    struct Value {
         glm::vec3 normal;
-        float pad;
         Sym3 curvature;
         SymCubic3 dcurv;
     };
-    std::vector<Sample> sample;
+    std::vector<glm::vec4> place;
+    std::vector<Value> value;
 
     bool fitted() const { return !valid.empty(); }
 };
