@@ -225,12 +225,17 @@ bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint
     const uint32_t home = level.vertex_cluster[vertex];
     const float r = kPushRadius * level.cell, inv_r2 = 1.0f / (r * r);
     out = LevelValue{};
+    // Each cluster's value is carried from its centroid to the vertex to
+    // first order (dn = II dp, dII = C(dp)), so the blend has no bias from
+    // where the clusters happen to sit around the vertex.
     auto take = [&](uint32_t q, float w) {
         const ScaleLevelFields::Value& s = fields.value[q];
+        const glm::vec3 d = p - glm::vec3(fields.place[q]);
         out.weight += w;
-        out.normal_sum += w * s.normal;
+        out.normal_sum += w * (s.normal + apply(s.curvature, d));
         if (kTensors) {
             add_scaled(out.curvature, w, s.curvature);
+            add_scaled(out.curvature, w, contract(s.dcurv, d));
             add_scaled(out.dcurv, w, s.dcurv);
         }
     };
@@ -335,8 +340,10 @@ ScaleSpace build_scale_space(const Mesh& mesh) {
     const float radius = 0.5f * glm::length(hi - lo);
     space.first_cell = 1.5f * h;
     space.origin = lo;
+    // Up to a quarter of the bounding radius: coarser, a few clusters would
+    // stand for the whole model.
     size_t levels = 1;
-    while (space.level_scale(levels) <= radius && levels < 30) ++levels;
+    while (space.level_scale(levels) <= 0.25f * radius && levels < 30) ++levels;
     space.clusters.resize(levels);
     space.levels.resize(levels);
     return space;

@@ -73,8 +73,8 @@ struct ScaleSpace {
     float max_scale() const { return empty() ? raw_scale : level_scale(levels.size() - 1); }
 };
 
-// Sets up the levels (first cell 1.5 mean edge lengths, doubling up to the
-// bounding radius), none built yet: cheap.
+// Sets up the levels (first cell 1.5 mean edge lengths, doubling up to a
+// quarter of the bounding radius), none built yet: cheap.
 ScaleSpace build_scale_space(const Mesh& mesh);
 
 // Builds and fits every level. raw: compute_surface_fields' output for the

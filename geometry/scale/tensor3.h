@@ -30,6 +30,13 @@ inline float sym3_eval(const Sym3& t, const glm::vec3& a, const glm::vec3& b) {
            m[2] * (a.x * b.z + a.z * b.x) + m[4] * (a.y * b.z + a.z * b.y);
 }
 
+// T x.
+inline glm::vec3 apply(const Sym3& t, const glm::vec3& x) {
+    const float* m = t.m;
+    return {m[0] * x.x + m[1] * x.y + m[2] * x.z, m[1] * x.x + m[3] * x.y + m[4] * x.z,
+            m[2] * x.x + m[4] * x.y + m[5] * x.z};
+}
+
 inline Sym3 embed(const Tensor2& t, const glm::vec3& u, const glm::vec3& v) {
     // T = ku u u^T + kuv (u v^T + v u^T) + kv v v^T
     auto entry = [&](int i, int j) { return t.ku * u[i] * u[j] + t.kuv * (u[i] * v[j] + v[i] * u[j]) + t.kv * v[i] * v[j]; };
