@@ -66,8 +66,11 @@ struct ScriptedRun {
                          "screenshot " + dir + "/start-drawing.png no-panel\n"
                          "drag 565 250 700 230 left 6\n"
                          "frames 1\n"
+                         "wait-compute\n"
+                         "frames 1\n"
                          "screenshot " + dir + "/orbited.png no-panel\n"
                          "save-view " + dir + "/orbited.xf\n"
+
                          "set shading none\n"
                          "set lines contours\n"
                          "frames 1\n"
@@ -76,7 +79,14 @@ struct ScriptedRun {
                          "frames 1\n"
                          "screenshot " + dir + "/no-lines.png no-panel\n"
                          "key C\n"
-                         "screenshot " + dir + "/window-lines.png\n");
+                         "screenshot " + dir + "/window-lines.png\n"
+                         "set shading lambert\n"
+                         "set lines contours,suggestive\n"
+                         "scroll 565 250 4\n"
+                         "wait-compute\n"
+                         "frames 1\n"
+                         "screenshot " + dir + "/zoomed.png no-panel\n"
+                         "save-view " + dir + "/zoomed.xf\n");
         result = run_viewer("--size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script " +
                             dir + "/steps.txt");
     }
@@ -163,16 +173,22 @@ TEST_CASE("a view saved as .xf renders the same with kappa render --xf", "[viewe
     const ScriptedRun& run = scripted_run();
     INFO(run.result.output);
     REQUIRE(run.result.exit_code == 0);
-    const std::string out = run.dir + "/rendered.png";
-    const auto r = test::run_command(std::string(KAPPA_EXE) + " render -q -o " + out + " --xf " + run.dir +
-                                     "/orbited.xf --size " + std::to_string(kWidth - kPanel) + "x" +
-                                     std::to_string(kHeight));
-    INFO(r.output);
-    REQUIRE(r.exit_code == 0);
-    const render::Image viewer = run.image("orbited.png"), headless = render::read_png(out);
-    REQUIRE(headless.width == viewer.width);
-    REQUIRE(headless.height == viewer.height);
-    CHECK(mean_difference(viewer, 0, headless, 0, viewer.width, viewer.height) < 1.0);
+    // The orbited view, and a zoomed one: the viewer's detail fields follow
+    // the view (computed on its worker) as kappa render's do.
+    for (const std::string view : {"orbited", "zoomed"}) {
+        const std::string out = run.dir + "/rendered-" + view + ".png";
+        const auto r = test::run_command(std::string(KAPPA_EXE) + " render -q -o " + out + " --xf " + run.dir +
+                                         "/" + view + ".xf --size " + std::to_string(kWidth - kPanel) + "x" +
+                                         std::to_string(kHeight));
+        INFO(view << ": " << r.output);
+        REQUIRE(r.exit_code == 0);
+        const render::Image viewer = run.image(view + ".png"), headless = render::read_png(out);
+        REQUIRE(headless.width == viewer.width);
+        REQUIRE(headless.height == viewer.height);
+        CHECK(mean_difference(viewer, 0, headless, 0, viewer.width, viewer.height) < 1.0);
+    }
+    // Zooming changed the picture (not the same image twice).
+    CHECK(mean_difference(run.image("orbited.png"), 0, run.image("zoomed.png"), 0, kWidth - kPanel, kHeight) > 5.0);
 }
 
 TEST_CASE("script errors name the file and line; the viewer exits 1", "[viewer][window]") {

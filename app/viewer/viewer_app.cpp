@@ -175,26 +175,32 @@ void ViewerApp::request_view_fields() {
             redraw_frames_ = 2;
         }
     }
-    if (drag_button_ >= 0 || compute_.view_busy() || compute_.busy()) return;
+    if (drag_button_ >= 0 || compute_.view_busy() || compute_.busy() || !view_fields_stale()) return;
     const float detail = effective_detail();
     const render::Camera now = camera();
     const int height = drawing_area().pixels.y;
     if (detail == 0) {
-        if (shown_.detail != 0) {
-            renderer_->update_fields(*model_->mesh, *model_->fields, model_->feature_size);
-            shown_ = {0, now, height};
-        }
+        renderer_->update_fields(*model_->mesh, *model_->fields, model_->feature_size);
+        shown_ = {0, now, height};
         return;
     }
+    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail});
+}
+
+bool ViewerApp::view_fields_stale() const {
+    if (!model_ || !renderer_->mesh()) return false;
+    const float detail = effective_detail();
+    if (detail != shown_.detail) return true;
+    if (detail == 0) return false;
+    const render::Camera now = camera();
+    const int height = drawing_area().pixels.y;
     const glm::vec3 pivot = orbit_.pivot();
     const auto pixel_at_pivot = [&](const render::Camera& c, int h) {
         return glm::length(c.eye() - pivot) * std::tan(glm::radians(0.5f * c.fov_y_deg)) / float(std::max(h, 1));
     };
     const float ratio = pixel_at_pivot(now, height) / pixel_at_pivot(shown_.camera, shown_.height);
     const float turn = glm::dot(glm::normalize(now.eye() - pivot), glm::normalize(shown_.camera.eye() - pivot));
-    if (detail == shown_.detail && ratio < 1.1f && ratio > 1.0f / 1.1f && turn > std::cos(glm::radians(10.0f)))
-        return;
-    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail});
+    return !(ratio < 1.1f && ratio > 1.0f / 1.1f && turn > std::cos(glm::radians(10.0f)));
 }
 
 void ViewerApp::draw_frame() {

@@ -58,6 +58,7 @@ private:
     void adopt_results();
     float effective_detail() const;  // the detail setting, 0 while explicit smoothing widths override it
     void request_view_fields();      // new detail fields when the view's scale changed
+    bool view_fields_stale() const;  // the fields on the GPU are for another scale or direction of view
     // The drawing sits right of the panel: its left edge and size in window
     // coordinates (as the cursor), and its size in framebuffer pixels.
     struct Area {

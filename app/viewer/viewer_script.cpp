@@ -26,7 +26,7 @@ bool ViewerApp::script_step() {
             if (--frames_left_ == 0) ++step_;
             return true;
         case ScriptStep::WaitCompute:
-            if (compute_.busy() || compute_.view_busy()) return true;
+            if (compute_.busy() || compute_.view_busy() || view_fields_stale()) return true;
             break;
         case ScriptStep::Drag:
             // The same handlers as real mouse events: press, one move a frame, release.
