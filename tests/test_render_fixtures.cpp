@@ -1,6 +1,7 @@
 #include "test_render_fixtures.h"
 
 #include "render/egl_context.h"
+#include "render/ink_agreement.h"
 #include "render/png_writer.h"
 
 #include <glm/geometric.hpp>
@@ -98,14 +99,9 @@ render::Image render(const Mesh& mesh, const SurfaceFields& fields, float fs, co
     return render::render_to_image(r, camera, settings, width, height);
 }
 
-bool is_ink(const render::Rgba& c) { return std::min({c.r, c.g, c.b}) < 128; }
+bool is_ink(const render::Rgba& c) { return render::is_ink(c); }
 
-size_t count_ink(const render::Image& image) {
-    size_t n = 0;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) n += is_ink(image.at(x, y));
-    return n;
-}
+size_t count_ink(const render::Image& image) { return render::count_ink(image); }
 
 glm::vec2 project(const render::Camera& camera, const render::BoundingSphere& bounds, glm::vec3 point, int width,
                   int height) {
