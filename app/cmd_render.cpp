@@ -103,8 +103,8 @@ int run_render(int argc, char** argv) {
         .number("--sc-threshold", s.sc_threshold,
                 "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)", 0,
                 1e6, "S")
-        .option("--detail", "PX|off", "smallest shape feature, in pixels, that draws lines: curvature is taken at "
-                "that scale on the surface (default 12; off: the raw 1-ring estimate)",
+        .option("--detail", "PX|off", "scale of the surface the lines follow, in pixels on screen: shape features "
+                "much smaller draw no lines (default 12; off: the paper's raw 1-ring estimate)",
                 word(s.detail, render::parse_detail),
                 "a size in pixels (0 < PX <= 1000) or off")
         .number("--line-width", s.line_width, "line width in pixels (default 2)", 0.1, 64, "PX")
@@ -123,9 +123,10 @@ int run_render(int argc, char** argv) {
         .flag("-q,--quiet", quiet, "print nothing but errors")
         .threads()
         .epilog("With --shading none --colormap none the surface is white and only lines are dark.\n"
+                "Lines follow the surface at the --detail scale; explicit --smooth-* widths override it.\n"
                 "The feature size fs (geometry/feature_size.h) makes --sc-threshold the same on every mesh.\n"
                 "Examples:\n"
-                "  kappa render bunny.ply -o bunny.png --smooth-curvature 0.001\n"
+                "  kappa render bunny.ply -o bunny.png --detail 24   (calmer lines)\n"
                 "  kappa render -o blob.png --shading none --eye 0,-2.6,1.85 --line-width 2.5\n"
                 "  kappa render bunny.ply -o turn.png --turntable 12 --size 512x512");
     if (auto status = p.parse(argc, argv)) return *status;

@@ -47,7 +47,7 @@ int run_view(int argc, char** argv) {
         .threads()
         .epilog("Without a display (no X server) it exits with status 1: use 'kappa render' to render headless.\n"
                 "Examples:\n"
-                "  kappa view bunny.ply --smooth-curvature 0.001\n"
+                "  kappa view bunny.ply --detail off   (the raw 1-ring lines)\n"
                 "  kappa view --shading none --lines contours,suggestive\n"
                 "  xvfb-run -a kappa view bunny.ply --size 640x480 --frames 3 --screenshot shot.png\n");
     if (auto status = p.parse(argc, argv)) return *status;
