@@ -145,13 +145,20 @@ int run_render(int argc, char** argv) {
         const Mesh mesh = load_mesh_or_default(mesh_path);
         const double load_s = seconds_since(t_load);
 
-        ProgressBar bar(!quiet && mesh.face_count() >= 200000);
-        StageTimes times;
-        const SurfaceFields fields =
-            compute_surface_fields(mesh, smoothing, &times, [&](float f, const char* stage) { bar.update(f, stage); });
-        bar.finish();
         // Explicit smoothing widths override the detail setting (README, "kappa render").
         if (p.seen("--smooth-normals") || p.seen("--smooth-curvature") || p.seen("--smooth-dcurv")) s.detail = 0;
+        // With detail, the per-vertex curvature is needed only where a view
+        // blends in the raw estimate (zoomed in on a coarse mesh): computed then.
+        ProgressBar bar(!quiet && mesh.face_count() >= 200000);
+        StageTimes times;
+        const auto compute_fields = [&] {
+            SurfaceFields f = compute_surface_fields(mesh, smoothing, &times,
+                                                     [&](float x, const char* stage) { bar.update(x, stage); });
+            bar.finish();
+            return f;
+        };
+        SurfaceFields fields =
+            s.detail > 0 && !smoothing.automatic ? compute_surface_normals(mesh, &times) : compute_fields();
         const auto t_fs = Clock::now();
         render::DetailSource detail_source;
         if (s.detail > 0) detail_source = render::make_detail_source(mesh, fields);
@@ -211,7 +218,10 @@ int run_render(int argc, char** argv) {
             const auto t_upload = Clock::now();
             float view_fs = fs;
             if (s.detail > 0) {
-                render::DetailFields d = render::detail_fields(mesh, detail_source, fields, view, size.y, s.detail);
+                const render::ViewScales scales = render::view_scales(mesh, detail_source, view, size.y, s.detail);
+                if (!fields.has_curvature() && render::needs_raw_curvature(detail_source, scales))
+                    fields = compute_fields();
+                render::DetailFields d = render::detail_fields(mesh, detail_source, fields, scales);
                 view_fs = d.feature_size;
                 if (i == 0) renderer.set_mesh(mesh, d.fields, view_fs, d.fine_normals);
                 else renderer.update_fields(mesh, d.fields, view_fs, d.fine_normals);

@@ -98,14 +98,17 @@ int main(int argc, char** argv) {
     };
     for (int r = 0; r < runs + 1; ++r) {
         const double a = seconds([&] {
+            // As kappa render does (render/detail_fields.cpp): normals first,
+            // the raw curvature only if the view's scales blend it in.
             const Mesh m = load_mesh(path);
-            const SurfaceFields f = compute_surface_fields(m);
+            SurfaceFields f = compute_surface_normals(m);
             ScaleSpace s = build_scale_space(m);
             const NoiseLevel noise = estimate_noise_level(m, build_vertex_faces(m), f.normals);
             const float floor = choose_smoothing_widths(noise).normals;
             std::vector<float> sg = pixel_sizes(m, view, fov, 768);
-            const std::vector<glm::vec3> fine = normals_at_scale(m, s, f, std::vector<float>(m.vertex_count(), 0.0f));
             for (float& x : sg) x = std::max(x * detail, floor);
+            if (uses_raw_estimate(s, sg)) f = compute_surface_fields(m);
+            const std::vector<glm::vec3> fine = normals_at_scale(m, s, f, std::vector<float>(m.vertex_count(), 0.0f));
             const SurfaceFields at = fields_at_scale(m, s, f, sg);
             (void)feature_size(m, at);
         });

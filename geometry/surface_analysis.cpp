@@ -30,8 +30,10 @@ private:
 
 }  // namespace
 
-SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& requested, StageTimes* times,
-                                     const ProgressFn& progress) {
+namespace {
+
+SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, StageTimes* times,
+                      const ProgressFn& progress, bool curvature) {
     StageTimes local;
     StageTimes& t = times ? *times : local;
     auto report = [&](float f, const char* stage) {
@@ -80,6 +82,10 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& r
     // Vertices with no usable face keep a fixed unit normal (they are flagged).
     for (auto& n : out.normals)
         if (n == glm::vec3(0.0f)) n = glm::vec3(0, 0, 1);
+    if (!curvature) {
+        report(1.0f, "done");
+        return out;
+    }
 
     report(0.35f, "curvature");
     FaceFits fits;
@@ -112,6 +118,17 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& r
     }
     report(1.0f, "done");
     return out;
+}
+
+}  // namespace
+
+SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing, StageTimes* times,
+                                     const ProgressFn& progress) {
+    return compute(mesh, smoothing, times, progress, true);
+}
+
+SurfaceFields compute_surface_normals(const Mesh& mesh, StageTimes* times) {
+    return compute(mesh, {}, times, {}, false);
 }
 
 }  // namespace kappa

@@ -27,4 +27,9 @@ using ProgressFn = std::function<void(float, const char*)>;
 SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing = {},
                                      StageTimes* times = nullptr, const ProgressFn& progress = {});
 
+// Only the first stages: normals, point areas and flags (k1, k2, d1, d2 and
+// dcurv left empty). What the scale space needs when a drawing's scales are
+// all above the raw estimate's (render/detail_fields.h).
+SurfaceFields compute_surface_normals(const Mesh& mesh, StageTimes* times = nullptr);
+
 }  // namespace kappa

@@ -34,6 +34,8 @@ struct SurfaceFields {
     NoiseLevel noise;                    // the estimate behind automatic widths (zero otherwise)
 
     size_t size() const { return normals.size(); }
+    // Whether curvature and C are there (compute_surface_normals leaves them out).
+    bool has_curvature() const { return k1.size() == normals.size(); }
     // Whether vertex v's estimate is flagged unreliable; false without flags.
     bool unreliable(size_t v) const { return v < flags.size() && (flags[v] & kFlagUnreliable); }
 };

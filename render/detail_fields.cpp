@@ -7,6 +7,7 @@
 #include "geometry/vertex_faces.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace kappa::render {
 
@@ -28,19 +29,36 @@ DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw) {
     return source;
 }
 
-DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw, const Camera& camera,
-                           int image_height, float detail_px) {
-    DetailFields out;
-    std::vector<float> sigma = pixel_sizes(mesh, camera.view, camera.fov_y_deg, image_height);
+ViewScales view_scales(const Mesh& mesh, const DetailSource& source, const Camera& camera, int image_height,
+                       float detail_px) {
+    ViewScales v;
+    v.sigma = pixel_sizes(mesh, camera.view, camera.fov_y_deg, image_height);
     // One pixel finer than the first level: the raw normals are the surface at pixel scale.
-    std::vector<float> fine = sigma;
+    v.fine = v.sigma;
     const float first_level = source.space.empty() ? 0.0f : source.space.level_scale(0);
-    for (float& s : fine) s = std::max(s >= first_level ? s : 0.0f, source.contour_floor);
-    out.fine_normals = normals_at_scale(mesh, source.space, raw, fine);
-    for (float& s : sigma) s = std::max(s * detail_px, source.noise_floor);
-    out.fields = fields_at_scale(mesh, source.space, raw, sigma);
+    for (float& s : v.fine) s = std::max(s >= first_level ? s : 0.0f, source.contour_floor);
+    for (float& s : v.sigma) s = std::max(s * detail_px, source.noise_floor);
+    return v;
+}
+
+bool needs_raw_curvature(const DetailSource& source, const ViewScales& scales) {
+    return uses_raw_estimate(source.space, scales.sigma);
+}
+
+DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw,
+                           const ViewScales& scales) {
+    if (!raw.has_curvature() && needs_raw_curvature(source, scales))
+        throw std::invalid_argument("detail_fields: these scales need the raw curvature");
+    DetailFields out;
+    out.fine_normals = normals_at_scale(mesh, source.space, raw, scales.fine);
+    out.fields = fields_at_scale(mesh, source.space, raw, scales.sigma);
     out.feature_size = feature_size(mesh, out.fields);
     return out;
+}
+
+DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw, const Camera& camera,
+                           int image_height, float detail_px) {
+    return detail_fields(mesh, source, raw, view_scales(mesh, source, camera, image_height, detail_px));
 }
 
 }  // namespace kappa::render

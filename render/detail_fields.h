@@ -37,8 +37,23 @@ struct DetailFields {
     float feature_size = 1;               // fs of `fields` (geometry/feature_size.h)
 };
 
-// Fields for one view: camera, image height in pixels, detail in pixels (> 0).
+// Fields for one view: camera, image height in pixels, detail in pixels
+// (> 0). raw: compute_surface_fields(mesh).
 DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw, const Camera& camera,
                            int image_height, float detail_px);
+
+// The same in two steps, for callers that start from compute_surface_normals
+// (cheaper) and compute the raw curvature only when a view needs it.
+struct ViewScales {
+    std::vector<float> sigma;  // per vertex: the fields' scale
+    std::vector<float> fine;   // per vertex: the contour and shading normals' scale
+};
+ViewScales view_scales(const Mesh& mesh, const DetailSource& source, const Camera& camera, int image_height,
+                       float detail_px);
+// Whether some vertex blends in the raw estimate, so raw must have curvature.
+bool needs_raw_curvature(const DetailSource& source, const ViewScales& scales);
+// Throws std::invalid_argument when raw lacks curvature that the scales need.
+DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw,
+                           const ViewScales& scales);
 
 }  // namespace kappa::render

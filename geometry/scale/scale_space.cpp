@@ -349,6 +349,12 @@ ScaleSpace build_scale_space(const Mesh& mesh) {
     return space;
 }
 
+bool uses_raw_estimate(const ScaleSpace& space, const std::vector<float>& sigma) {
+    if (space.empty()) return true;
+    const float first = space.level_scale(0);
+    return std::any_of(sigma.begin(), sigma.end(), [&](float s) { return !(s >= first); });
+}
+
 void fit_all_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw) {
     fit_levels_for(mesh, space, raw, space.raw_scale, space.max_scale());
 }
@@ -356,7 +362,21 @@ void fit_all_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& ra
 SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                               const std::vector<float>& sigma) {
     fit_levels_for(mesh, space, raw, sigma);
-    SurfaceFields out = raw;
+    SurfaceFields out;
+    out.normals = raw.normals;
+    out.point_areas = raw.point_areas;
+    out.flags = raw.flags;
+    out.smoothing = raw.smoothing;
+    out.noise = raw.noise;
+    const bool has_raw = raw.has_curvature();
+    if (has_raw) {
+        out.k1 = raw.k1, out.k2 = raw.k2, out.d1 = raw.d1, out.d2 = raw.d2, out.dcurv = raw.dcurv;
+    } else {  // zero where only the raw estimate could say (flagged vertices)
+        const size_t n = mesh.vertex_count();
+        out.k1.assign(n, 0.0f), out.k2.assign(n, 0.0f), out.dcurv.assign(n, glm::vec4(0.0f));
+        out.d1.resize(n), out.d2.resize(n);
+        for (size_t v = 0; v < n; ++v) tangent_frame(raw.normals[v], out.d1[v], out.d2[v]);
+    }
     parallel_for(mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
         if (!blend_vertex<true>(mesh, space, raw, v, sigma[v], b)) return;
@@ -368,7 +388,7 @@ SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const Surface
                 const float w = b.share[i] / b.value[i].weight;
                 add_scaled(tensor, w, b.value[i].curvature);
                 add_scaled(dcurv, w, b.value[i].dcurv);
-            } else {
+            } else if (has_raw) {
                 add_scaled(tensor, b.share[i], embed(Tensor2{raw.k1[v], 0, raw.k2[v]}, raw.d1[v], raw.d2[v]));
                 add_scaled(dcurv, b.share[i], embed(raw.dcurv[v], raw.d1[v], raw.d2[v]));
             }

@@ -77,6 +77,12 @@ struct ScaleSpace {
 // quarter of the bounding radius), none built yet: cheap.
 ScaleSpace build_scale_space(const Mesh& mesh);
 
+// Whether fields at these scales blend in the raw per-vertex estimate (some
+// sigma below the first level's). When not, fields_at_scale needs only the
+// raw normals, areas and flags (compute_surface_normals); without raw
+// curvature it takes it as zero where it would have used it.
+bool uses_raw_estimate(const ScaleSpace& space, const std::vector<float>& sigma);
+
 // Builds and fits every level. raw: compute_surface_fields' output for the
 // mesh (its normals and areas seed the clusters).
 void fit_all_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw);
