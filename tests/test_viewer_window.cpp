@@ -86,7 +86,12 @@ struct ScriptedRun {
                          "wait-compute\n"
                          "frames 1\n"
                          "screenshot " + dir + "/zoomed.png no-panel\n"
-                         "save-view " + dir + "/zoomed.xf\n");
+                         "save-view " + dir + "/zoomed.xf\n"
+                         "set detail off\n"
+                         "wait-compute\n"
+                         "frames 1\n"
+                         "screenshot " + dir + "/raw.png no-panel\n"
+                         "save-view " + dir + "/raw.xf\n");
         result = run_viewer("--size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --script " +
                             dir + "/steps.txt");
     }
@@ -175,11 +180,12 @@ TEST_CASE("a view saved as .xf renders the same with kappa render --xf", "[viewe
     REQUIRE(run.result.exit_code == 0);
     // The orbited view, and a zoomed one: the viewer's detail fields follow
     // the view (computed on its worker) as kappa render's do.
-    for (const std::string view : {"orbited", "zoomed"}) {
+    // `set detail off` then draws the raw 1-ring lines, as --detail off does.
+    for (const std::string view : {"orbited", "zoomed", "raw"}) {
         const std::string out = run.dir + "/rendered-" + view + ".png";
         const auto r = test::run_command(std::string(KAPPA_EXE) + " render -q -o " + out + " --xf " + run.dir +
                                          "/" + view + ".xf --size " + std::to_string(kWidth - kPanel) + "x" +
-                                         std::to_string(kHeight));
+                                         std::to_string(kHeight) + (view == "raw" ? " --detail off" : ""));
         INFO(view << ": " << r.output);
         REQUIRE(r.exit_code == 0);
         const render::Image viewer = run.image(view + ".png"), headless = render::read_png(out);
@@ -189,6 +195,7 @@ TEST_CASE("a view saved as .xf renders the same with kappa render --xf", "[viewe
     }
     // Zooming changed the picture (not the same image twice).
     CHECK(mean_difference(run.image("orbited.png"), 0, run.image("zoomed.png"), 0, kWidth - kPanel, kHeight) > 5.0);
+    CHECK(mean_difference(run.image("zoomed.png"), 0, run.image("raw.png"), 0, kWidth - kPanel, kHeight) > 0.05);
 }
 
 TEST_CASE("script errors name the file and line; the viewer exits 1", "[viewer][window]") {

@@ -50,11 +50,42 @@ BackgroundCompute::~BackgroundCompute() {
     worker_.join();
 }
 
-void BackgroundCompute::load(const std::string& path, const SmoothingOptions& smoothing) {
+void BackgroundCompute::load(const std::string& path, const SmoothingOptions& smoothing, bool normals_first) {
     Request r;
     r.path = path;
     r.smoothing = smoothing;
+    r.normals_first = normals_first && !smoothing.automatic && !(smoothing.normals > 0) &&
+                      !(smoothing.curvature > 0) && !(smoothing.dcurv > 0);
     submit(std::move(r));
+}
+
+void BackgroundCompute::frame_drawn() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (frame_since_result_ || done_) return;  // nothing waits, or the result is not shown yet
+        frame_since_result_ = true;
+    }
+    wake_.notify_one();
+}
+
+std::optional<BackgroundCompute::Completion> BackgroundCompute::take_completion() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<Completion> r = std::move(done_completion_);
+    done_completion_.reset();
+    return r;
+}
+
+BackgroundCompute::Completion BackgroundCompute::complete(std::shared_ptr<const Mesh> mesh,
+                                                          const SmoothingOptions& smoothing) {
+    Completion c;
+    const auto t = std::chrono::steady_clock::now();
+    auto fields = std::make_shared<SurfaceFields>(compute_surface_fields(*mesh, smoothing, &c.stages));
+    c.feature_size = feature_size(*mesh, *fields);
+    c.summary = summarize(*fields);
+    c.fields_s = seconds_since(t);
+    c.fields = std::move(fields);
+    c.mesh = std::move(mesh);
+    return c;
 }
 
 void BackgroundCompute::recompute(const Model& model, const SmoothingOptions& smoothing) {
@@ -110,7 +141,15 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
     out.camera = r.camera;
     out.height = r.height;
     out.detail_px = r.detail_px;
-    const render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *r.fields, r.camera, r.height, r.detail_px);
+    const render::ViewScales scales = render::view_scales(*r.mesh, *r.detail, r.camera, r.height, r.detail_px);
+    std::shared_ptr<const SurfaceFields> fields = r.fields;
+    if (!fields->has_curvature() && render::needs_raw_curvature(*r.detail, scales)) {
+        Completion c = complete(r.mesh, {});  // zoomed in on a coarse mesh before its fields were complete
+        fields = c.fields;
+        std::lock_guard<std::mutex> lock(mutex_);
+        done_completion_ = std::move(c);
+    }
+    const render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *fields, scales);
     out.upload = render::prepare_field_upload(*r.mesh, d.fields, d.feature_size, d.fine_normals, *r.clusters, false);
     return out;
 }
@@ -137,10 +176,25 @@ void BackgroundCompute::run() {
             progress_ = 0;
         }
         Result result = execute(request);
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (request.generation == generation_) {  // still the newest request
-            done_ = std::move(result);
-            busy_ = false;
+        std::shared_ptr<const Mesh> to_complete;
+        if (result.model && !result.model->fields->has_curvature()) to_complete = result.model->mesh;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            if (request.generation == generation_) {  // still the newest request
+                done_ = std::move(result);
+                busy_ = false;
+            }
+            if (to_complete) {  // after the frame that shows the model
+                frame_since_result_ = false;
+                wake_.wait(lock, [this] { return quit_ || pending_ || frame_since_result_; });
+            }
+            if (quit_) return;
+            if (pending_) continue;  // a newer model is wanted: never mind completing this one
+        }
+        if (to_complete) {
+            Completion c = complete(to_complete, request.smoothing);
+            std::lock_guard<std::mutex> lock(mutex_);
+            done_completion_ = std::move(c);
         }
     }
 }
@@ -164,17 +218,19 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             m.load_s = seconds_since(t);
         }
         const auto t = std::chrono::steady_clock::now();
+        const auto report = [&](float f, const char* stage) {
+            progress_ = f;
+            set_stage(stage);
+        };
         auto fields = std::make_shared<SurfaceFields>(
-            compute_surface_fields(*m.mesh, request.smoothing, &m.stages, [&](float f, const char* stage) {
-                progress_ = f;
-                set_stage(stage);
-            }));
+            request.normals_first ? compute_surface_normals(*m.mesh, &m.stages)
+                                  : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report));
         set_stage("feature size");
-        m.feature_size = feature_size(*m.mesh, *fields);
+        if (fields->has_curvature()) m.feature_size = feature_size(*m.mesh, *fields);
         set_stage("scale space");
         m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields));
         m.fields_s = seconds_since(t);
-        m.summary = summarize(*fields);
+        if (fields->has_curvature()) m.summary = summarize(*fields);
         m.fields = std::move(fields);
         result.model = std::move(m);
     } catch (const std::bad_alloc&) {

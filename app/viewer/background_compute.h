@@ -53,8 +53,11 @@ public:
     BackgroundCompute(const BackgroundCompute&) = delete;
     BackgroundCompute& operator=(const BackgroundCompute&) = delete;
 
-    // Reads `path` ("" = the built-in model), then computes its fields.
-    void load(const std::string& path, const SmoothingOptions& smoothing);
+    // Reads `path` ("" = the built-in model), then computes its fields. With
+    // normals_first (drawings at a detail scale need only the normals to
+    // start), the model arrives with normals, areas and flags, and the full
+    // per-vertex fields follow as a completion (take_completion).
+    void load(const std::string& path, const SmoothingOptions& smoothing, bool normals_first = false);
     // Recomputes the fields of an already loaded mesh with new widths.
     void recompute(const Model& model, const SmoothingOptions& smoothing);
 
@@ -93,17 +96,33 @@ public:
     };
     std::optional<Result> take();
 
+    // The full fields of a model that arrived with normals only.
+    struct Completion {
+        std::shared_ptr<const Mesh> mesh;  // whose fields these are
+        std::shared_ptr<const SurfaceFields> fields;
+        float feature_size = 1;
+        ModelSummary summary;
+        StageTimes stages;
+        double fields_s = 0;
+    };
+    std::optional<Completion> take_completion();
+    // Called after each drawn frame: a completion starts only after the
+    // frame that shows its model, so it does not slow that frame down.
+    void frame_drawn();
+
 private:
     struct Request {
         std::string path;
         std::shared_ptr<const Mesh> mesh;  // set: recompute only
         SmoothingOptions smoothing;
+        bool normals_first = false;
         unsigned generation = 0;
     };
     void submit(Request request);
     void run();
     Result execute(const Request& request);
     ViewResult execute_view(const ViewRequest& request);
+    Completion complete(std::shared_ptr<const Mesh> mesh, const SmoothingOptions& smoothing);
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
@@ -112,6 +131,8 @@ private:
     unsigned generation_ = 0;  // of the newest request
     bool quit_ = false;
     std::atomic<bool> busy_{false};
+    std::optional<Completion> done_completion_;
+    bool frame_since_result_ = true;  // guarded by mutex_
     std::optional<ViewRequest> pending_view_;
     std::optional<ViewResult> done_view_;
     std::atomic<bool> view_busy_{false};

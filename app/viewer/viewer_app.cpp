@@ -1,5 +1,6 @@
 #include "app/viewer/viewer_app.h"
 
+#include "geometry/feature_size.h"
 #include "render/gl.h"
 #include "render/gl_loader.h"
 
@@ -41,7 +42,7 @@ ViewerApp::ViewerApp(ViewerOptions options) : options_(std::move(options)), stat
     if (!options_.xf_path.empty()) panel_.view_path = options_.xf_path;
     // Reading the mesh and estimating curvature overlap with opening the
     // window and compiling the shaders.
-    compute_.load(options_.mesh_path, state_.smoothing);
+    compute_.load(options_.mesh_path, state_.smoothing, effective_detail() > 0);
 }
 
 ViewerApp::~ViewerApp() {
@@ -119,6 +120,17 @@ void ViewerApp::wait_for_events() {
 
 // A finished load or recompute replaces the current model within this frame.
 void ViewerApp::adopt_results() {
+    // The full per-vertex fields of a model that arrived with normals only:
+    // the drawing does not change (it is at the detail scale), the panel's
+    // numbers and `--detail off` get them.
+    if (auto c = compute_.take_completion(); c && model_ && c->mesh == model_->mesh) {
+        model_->fields = c->fields;
+        model_->feature_size = c->feature_size;
+        model_->summary = c->summary;
+        model_->stages = c->stages;
+        model_->fields_s += c->fields_s;
+        redraw_frames_ = 2;
+    }
     auto result = compute_.take();
     if (!result) return;
     redraw_frames_ = 2;
@@ -146,11 +158,21 @@ void ViewerApp::adopt_results() {
     // already right; later views get theirs from the worker.
     const auto t = std::chrono::steady_clock::now();
     shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
+    const auto complete_fields = [&] {  // on this thread: only small meshes or rare views need it
+        if (model_->fields->has_curvature()) return;
+        auto fields = std::make_shared<SurfaceFields>(compute_surface_fields(*model_->mesh, state_.smoothing));
+        model_->feature_size = feature_size(*model_->mesh, *fields);
+        model_->summary = summarize(*fields);
+        model_->fields = std::move(fields);
+    };
     if (shown_.detail > 0) {
-        const render::DetailFields d = render::detail_fields(*model_->mesh, *model_->detail, *model_->fields,
-                                                             shown_.camera, shown_.height, shown_.detail);
+        const render::ViewScales scales =
+            render::view_scales(*model_->mesh, *model_->detail, shown_.camera, shown_.height, shown_.detail);
+        if (render::needs_raw_curvature(*model_->detail, scales)) complete_fields();
+        const render::DetailFields d = render::detail_fields(*model_->mesh, *model_->detail, *model_->fields, scales);
         renderer_->set_mesh(*model_->mesh, d.fields, d.feature_size, d.fine_normals);
     } else {
+        complete_fields();
         renderer_->set_mesh(*model_->mesh, *model_->fields, model_->feature_size);
     }
     face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
@@ -180,6 +202,7 @@ void ViewerApp::request_view_fields() {
     const render::Camera now = camera();
     const int height = drawing_area().pixels.y;
     if (detail == 0) {
+        if (!model_->fields->has_curvature()) return;  // the worker is completing them
         renderer_->update_fields(*model_->mesh, *model_->fields, model_->feature_size);
         shown_ = {0, now, height};
         return;
@@ -270,6 +293,7 @@ void ViewerApp::draw_frame() {
         std::fflush(stdout);
     }
     window_->swap_buffers();
+    compute_.frame_drawn();
 
     const float ms = float(seconds_since(t_begin) * 1000.0);
     frame_ms_.push_back(ms);
