@@ -5,33 +5,28 @@
 // mesh's own: on a noisy scan or a mesh much finer than a pixel it draws
 // scribbles. Following the idea of Ni et al. 2006 ("Multi-scale line
 // drawings from 3D meshes": precompute fields at several scales, pick one
-// per vertex from its projected pixel size), each level of a cluster
-// of clusters (surface_clusters.h: pieces of the mesh in grid cells whose
-// size doubles from level to level) gets its own fields, estimated on the
-// clusters as the paper does on faces but over a Gaussian neighbourhood:
-//   1. normal: the clusters' area-weighted mean normals, averaged with
-//      weights A_Q (1 - d^2 / R^2)^2 over the clusters Q within R = 2.5
-//      sigma (reached through cluster adjacency, facing the same way): a
-//      bump close to a Gaussian of width sigma;
-//   2. curvature: the weighted least-squares fit of II from normal
-//      differences along centroid differences, II e = dn (paper eq. 3,
-//      with neighbours in place of a face's edges);
-//   3. C: the same fit of C from curvature differences, C(e) = dII
-//      (paper sec. 3.4).
-// sigma is the level's cell size; level k has twice the scale of level
-// k - 1. The raw per-vertex estimate counts as the scale raw_scale (half a
-// mean edge). fields_at_scale() blends, per vertex, the two levels around
-// the wanted sigma (linearly in log sigma): each level's value at a vertex
-// is the bump-weighted mean of its cluster and the adjacent ones, with
-// tensors summed as tensors of 3D space (tensor3.h) and restricted to the
-// vertex's blended tangent plane.
+// per vertex from its projected pixel size), level l cuts the mesh into
+// clusters of grid cells of size sigma_l = 1.5 mean edges x 2^l
+// (surface_clusters.h) and fits normals, II and C on them (level_fit.h).
+// The raw per-vertex estimate counts as the scale raw_scale (half a mean
+// edge). fields_at_scale() blends, per vertex, the two estimates around the
+// wanted sigma, linearly in log sigma. A level's value at a vertex is the
+// kernel-weighted mean (scale_kernel, R = 1.25 cells) of the vertex's
+// cluster and the adjacent ones, each carried from its centroid to the
+// vertex to first order (n + II dp, II + C(dp)); tensors are summed as
+// tensors of 3D space (tensor3.h) and restricted to the vertex's blended
+// tangent plane, then diagonalised.
+//
+// Boundaries: clusters at an open boundary fit from their one-sided
+// neighbourhood. Flagged vertices (isolated, degenerate) keep their raw
+// values; a vertex whose clusters have no valid fit (tiny components) takes
+// the raw estimate for that level.
 #pragma once
 
-#include "surface_clusters.h"
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
-#include "geometry/tensor_frames.h"
-#include "tensor3.h"
+#include "level_fit.h"
+#include "surface_clusters.h"
 
 #include <glm/vec4.hpp>
 
@@ -39,24 +34,6 @@
 #include <vector>
 
 namespace kappa {
-
-struct ScaleLevelFields {
-    std::vector<glm::vec3> normal;  // unit
-    std::vector<Sym3> curvature;    // II as a tensor of 3D space (tensor3.h)
-    std::vector<SymCubic3> dcurv;   // C as a tensor of 3D space
-    std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
-    // The same, packed per cluster for the per-vertex blend: where (centroid,
-    // and area or 0 where not valid) and what.
-    struct Value {
-        glm::vec3 normal;
-        Sym3 curvature;
-        SymCubic3 dcurv;
-    };
-    std::vector<glm::vec4> place;
-    std::vector<Value> value;
-
-    bool fitted() const { return !valid.empty(); }
-};
 
 // Levels are clustered and fitted when first needed: a drawing at one scale
 // pays for the one or two levels it blends.

@@ -1,0 +1,58 @@
+// The fields of one level of the scale space (scale_space.h), fitted on its
+// clusters (surface_clusters.h) as Rusinkiewicz 2004 fits them on faces, but
+// over a smooth neighbourhood of about one cell:
+//   1. normal: the clusters' area-weighted mean normals averaged with
+//      weights scale_kernel(A_Q, d^2, 1 / R^2) over the clusters Q within
+//      R = 2 cells, reached through cluster adjacency and facing the same
+//      way (mean normals with a positive dot product);
+//   2. curvature: the weighted least-squares fit of II in each cluster's
+//      tangent frame from normal differences along centroid differences,
+//      II e = dn (the paper's eq. 3, neighbours in place of a face's edges);
+//   3. C: the same fit of the derivative tensor from curvature differences,
+//      C(e) = dII (sec. 3.4), the neighbours' tensors restricted to the
+//      cluster's frame.
+// A cluster whose neighbours cannot support a fit (fewer than two, or all
+// on a line) is marked not valid and never read. Every cluster's result is
+// written by one thread: deterministic for any thread count.
+#pragma once
+
+#include "surface_clusters.h"
+#include "tensor3.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace kappa {
+
+struct ScaleLevelFields {
+    std::vector<glm::vec3> normal;  // unit
+    std::vector<Sym3> curvature;    // II as a tensor of 3D space (tensor3.h)
+    std::vector<SymCubic3> dcurv;   // C as a tensor of 3D space
+    std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
+    // The same, packed per cluster for the per-vertex blend: where (centroid,
+    // and area or 0 where not valid) and what.
+    struct Value {
+        glm::vec3 normal;
+        Sym3 curvature;
+        SymCubic3 dcurv;
+    };
+    std::vector<glm::vec4> place;
+    std::vector<Value> value;
+
+    bool fitted() const { return !valid.empty(); }
+};
+
+ScaleLevelFields fit_level(const ClusterLevel& level);
+
+// The smooth kernel of the fits and of the per-vertex blend: area x
+// (1 - d^2 / R^2)^2 within R, a bump close to a Gaussian of sigma = R / 2.5,
+// cheaper than exp().
+inline float scale_kernel(float area, float d2, float inv_r2) {
+    const float x = 1.0f - d2 * inv_r2;
+    return x > 0 ? area * x * x : 0.0f;
+}
+
+}  // namespace kappa
