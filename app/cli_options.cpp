@@ -240,7 +240,7 @@ Parser& Parser::choice_list(const std::string& names, std::vector<std::string>& 
 
 Parser& Parser::threads() {
     return option(
-        "--threads", "N", "worker threads for the computation (default: all cores, also 0)",
+        "--threads", "N", "worker threads for the computation (default, or 0: one per core)",
         [](const std::string& value) {
             auto v = parse_int(value);
             if (!v || *v < 0 || *v > 4096) return false;
@@ -262,9 +262,10 @@ Parser& Parser::smoothing(SmoothingOptions& out) {
                },
                "auto or off")
         .number("--smooth-normals", out.normals,
-                  "Gaussian smoothing width (sigma, model units) for normals before curvature; 0 = off", 0)
-        .number("--smooth-curvature", out.curvature, "Gaussian smoothing width for the curvature tensor; 0 = off", 0)
-        .number("--smooth-dcurv", out.dcurv, "Gaussian smoothing width for C; 0 = off", 0);
+                  "Gaussian smoothing width (sigma, model units) for normals before curvature (default 0: none)", 0)
+        .number("--smooth-curvature", out.curvature,
+                "Gaussian smoothing width for the curvature tensor (default 0: none)", 0)
+        .number("--smooth-dcurv", out.dcurv, "Gaussian smoothing width for C (default 0: none)", 0);
 }
 
 Parser& Parser::positional(const std::string& name, std::string& out, const std::string& help, bool required) {

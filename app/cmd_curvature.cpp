@@ -7,10 +7,12 @@
 
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/io/output_file.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/vertex_flags.h"
 
 #include <algorithm>
+#include <optional>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -31,18 +33,18 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Range of a field over the vertices with no flag set (all vertices when every one is flagged).
-std::pair<float, float> reliable_range(const std::vector<float>& values, const std::vector<uint8_t>& flags) {
-    float lo = 0, hi = 0;
-    bool any = false;
-    for (int pass = 0; pass < 2 && !any; ++pass)
-        for (size_t i = 0; i < values.size(); ++i) {
-            if (pass == 0 && flags[i]) continue;
-            lo = any ? std::min(lo, values[i]) : values[i];
-            hi = any ? std::max(hi, values[i]) : values[i];
-            any = true;
-        }
-    return {lo, hi};
+// Range of a field over the vertices with no flag set; nullopt when every
+// vertex is flagged (nothing could be estimated).
+std::optional<std::pair<float, float>> reliable_range(const std::vector<float>& values,
+                                                      const std::vector<uint8_t>& flags) {
+    std::optional<std::pair<float, float>> range;
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (flags[i]) continue;
+        if (!range) range = std::make_pair(values[i], values[i]);
+        range->first = std::min(range->first, values[i]);
+        range->second = std::max(range->second, values[i]);
+    }
+    return range;
 }
 
 }  // namespace
@@ -85,6 +87,10 @@ int run_curvature(int argc, char** argv) {
             return 2;
         }
     }
+    if (auto problem = io::output_problem(out_path)) {  // before the mesh is read and curvature computed
+        std::fprintf(stderr, "kappa curvature: cannot write %s: %s\n", out_path.c_str(), problem->c_str());
+        return 1;
+    }
 
     try {
         const auto t_load = std::chrono::steady_clock::now();
@@ -110,12 +116,15 @@ int run_curvature(int argc, char** argv) {
             boundary += (f & kFlagBoundary) != 0;
             flagged += f != 0;
         }
-        const auto [k1_lo, k1_hi] = reliable_range(fields.k1, fields.flags);
-        const auto [k2_lo, k2_hi] = reliable_range(fields.k2, fields.flags);
+        const auto k1 = reliable_range(fields.k1, fields.flags), k2 = reliable_range(fields.k2, fields.flags);
         std::printf("%s: %zu vertices, %zu faces\n", mesh_display_name(mesh_path).c_str(),
                     mesh.vertex_count(), mesh.face_count());
         std::printf("  boundary vertices %zu, flagged (unreliable) vertices %zu\n", boundary, flagged);
-        std::printf("  k1 in [%.6g, %.6g], k2 in [%.6g, %.6g] (unflagged vertices)\n", k1_lo, k1_hi, k2_lo, k2_hi);
+        if (k1 && k2)
+            std::printf("  k1 in [%.6g, %.6g], k2 in [%.6g, %.6g] (unflagged vertices)\n", k1->first, k1->second,
+                        k2->first, k2->second);
+        else
+            std::printf("  every vertex is flagged: no curvature could be estimated (all written as 0)\n");
         std::printf("  feature size %.6g\n", feature_size(mesh, fields));
         if (fields.smoothing.automatic)
             std::printf("  noise level %.6g (%.4g median edges of %.6g), estimated from %zu vertices\n",

@@ -10,11 +10,12 @@
 
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/io/output_file.h"
 #include "geometry/surface_analysis.h"
 #include "render/camera.h"
 #include "render/detail_fields.h"
 #include "render/egl_context.h"
-#include "render/png_writer.h"
+#include "render/image_writer.h"
 #include "render/render_settings.h"
 #include "render/renderer.h"
 
@@ -30,6 +31,10 @@ namespace kappa::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Largest image side: what OpenGL implementations commonly allow for a
+// framebuffer (llvmpipe and current GPUs: 16384).
+constexpr int kMaxImageSide = 16384;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -79,12 +84,13 @@ int run_render(int argc, char** argv) {
                   "Draw a mesh headless (EGL, no display needed) with occluding and suggestive contours, "
                   "shading, curvature colour maps and hatching, and write an 8-bit RGBA PNG.");
     p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl); default: the built-in model", false)
-        .text("-o,--output", out_path, "output PNG file", "OUT.png")
+        .text("-o,--output", out_path, "output image: .png, or .jpg/.jpeg (opaque background only)", "OUT.png")
         .size("--size", size, "image size in pixels (default 1024x768)")
         .vec3("--eye", eye, "camera position (default: framing the model's bounding sphere from +z)")
         .vec3("--target", target, "point the camera looks at (default: the bounding sphere's centre)")
         .vec3("--up", up, "camera up direction (default 0,1,0)")
-        .number("--fov", fov, "vertical field of view in degrees (default 30; with --xf, rtsc's)", 1, 170, "DEG")
+        .number("--fov", fov, "vertical field of view in degrees (default 30; with --xf the one rtsc uses for "
+                "that image size, so views saved there match)", 1, 170, "DEG")
         .text("--xf", xf_path, "trimesh2/rtsc viewpoint file (4x4 model-view matrix)", "FILE")
         .option("--lines", "LIST", "lines to draw, comma list of: contours, suggestive, boundaries, none "
                 "(default contours,suggestive)", word(s.lines, render::parse_lines),
@@ -124,7 +130,8 @@ int run_render(int argc, char** argv) {
         .threads()
         .epilog("With --shading none --colormap none the surface is white and only lines are dark.\n"
                 "Lines follow the surface at the --detail scale; explicit --smooth-* widths override it.\n"
-                "The feature size fs (geometry/feature_size.h) makes --sc-threshold the same on every mesh.\n"
+                "--sc-threshold is divided by the square of the mesh's feature size fs (printed by 'kappa info'),\n"
+                "so the same value means the same on every mesh.\n"
                 "Examples:\n"
                 "  kappa render bunny.ply -o bunny.png --detail 24   (calmer lines)\n"
                 "  kappa render -o blob.png --shading none --eye 0,-2.6,1.85 --line-width 2.5\n"
@@ -132,6 +139,26 @@ int run_render(int argc, char** argv) {
     if (auto status = p.parse(argc, argv)) return *status;
     if (out_path.empty()) {
         std::fprintf(stderr, "kappa render: missing -o OUT.png (see 'kappa render --help')\n");
+        return 2;
+    }
+    // Everything that can be checked before the mesh is read and curvature computed.
+    if (!render::image_format_for(out_path)) {
+        std::fprintf(stderr, "kappa render: cannot tell the image format of '%s': use .png, .jpg or .jpeg\n",
+                     out_path.c_str());
+        return 2;
+    }
+    if (render::image_format_for(out_path) == render::ImageFormat::Jpeg && s.background.a < 1.0f) {
+        std::fprintf(stderr, "kappa render: %s: JPEG has no transparency (use .png, or an opaque --background)\n",
+                     out_path.c_str());
+        return 2;
+    }
+    if (auto problem = io::output_problem(out_path)) {
+        std::fprintf(stderr, "kappa render: cannot write %s: %s\n", out_path.c_str(), problem->c_str());
+        return 1;
+    }
+    if (size.x > kMaxImageSide || size.y > kMaxImageSide) {
+        std::fprintf(stderr, "kappa render: --size %dx%d is too large (at most %dx%d)\n", size.x, size.y,
+                     kMaxImageSide, kMaxImageSide);
         return 2;
     }
     const bool look_at = p.seen("--eye") || p.seen("--target") || p.seen("--up");
@@ -144,6 +171,8 @@ int run_render(int argc, char** argv) {
         const auto t_load = Clock::now();
         const Mesh mesh = load_mesh_or_default(mesh_path);
         const double load_s = seconds_since(t_load);
+        if (mesh.face_count() == 0)
+            return cli::fail(mesh_display_name(mesh_path) + ": the mesh has no faces: nothing to draw");
 
         // Explicit smoothing widths override the detail setting (README, "kappa render").
         if (p.seen("--smooth-normals") || p.seen("--smooth-curvature") || p.seen("--smooth-dcurv")) s.detail = 0;
@@ -243,7 +272,7 @@ int run_render(int argc, char** argv) {
             const double render_s = seconds_since(t_render);
             const std::string path = turntable ? numbered_path(out_path, i) : out_path;
             const auto t_write = Clock::now();
-            render::write_png(path, image);
+            render::write_image(path, image);
             if (!quiet)
                 std::printf("  wrote %s (%dx%d): render %.3f s, write %.3f s\n", path.c_str(), size.x, size.y,
                             render_s, seconds_since(t_write));

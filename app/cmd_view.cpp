@@ -43,7 +43,8 @@ int run_view(int argc, char** argv) {
     p.integer("--frames", o.frames, "draw N frames, save --screenshot, exit (scripted runs)", 1, 1000000)
         .text("--screenshot", o.screenshot, "PNG of the whole window, panel included, after --frames", "OUT.png")
         .text("--script", script_path,
-              "synthetic input: drag, scroll, key, set, screenshot... steps (app/viewer/input_script.h)", "FILE")
+              "synthetic input, one step a line: frames N, drag X0 Y0 X1 Y1, scroll X Y N, key K, set NAME "
+              "VALUE, screenshot PATH, ... (README, 'Viewer')", "FILE")
         .threads()
         .epilog("Without a display (no X server) it exits with status 1: use 'kappa render' to render headless.\n"
                 "Examples:\n"

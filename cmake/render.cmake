@@ -3,7 +3,7 @@
 #   - glad 2 is generated at build time (python3-glad, offline with --reproducible)
 #   - shaders/*.glsl are embedded into the library as string literals, so the
 #     kappa executable runs from any directory
-#   - EGL for headless contexts, libpng for PNG output
+#   - EGL for headless contexts, libpng for PNG output, libstb (stb_image_write) for JPEG
 
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(PNG REQUIRED)
@@ -35,7 +35,7 @@ add_custom_command(
 add_library(kappa_render STATIC ${KAPPA_RENDER_SOURCES} ${KAPPA_SHADER_CPP})
 target_include_directories(kappa_render PUBLIC ${CMAKE_SOURCE_DIR})
 target_link_libraries(kappa_render PUBLIC kappa_geometry kappa_glad OpenGL::OpenGL OpenGL::EGL
-                      PRIVATE PNG::PNG)
+                      PRIVATE PNG::PNG stb)
 
 # --- the viewer's window and UI: GLFW (X11) and Dear ImGui ----------------------
 # Debian's libimgui.a already contains the GLFW and OpenGL3 backends (platform.md).

@@ -112,11 +112,12 @@ TEST_CASE("kappa curvature reports bad input on one line with a non-zero exit", 
         CHECK(r.exit_code == 2);
         CHECK(r.output.find("out.xyz") != std::string::npos);
     }
-    SECTION("unwritable output") {
-        const auto r = run_command(kExe + " curvature -o " + dir + "/no/such/dir/out.csv");
+    SECTION("unwritable output, found before the mesh is read") {
+        const auto r = run_command(kExe + " curvature " + dir + "/nope.ply -o " + dir + "/no/such/dir/out.csv");
         CHECK(r.exit_code == 1);
         CHECK(count_lines(r.output) == 1);
         CHECK(r.output.find("out.csv") != std::string::npos);
+        CHECK(r.output.find("no such folder") != std::string::npos);  // not the missing mesh
     }
     SECTION("negative smoothing width") {
         const auto r = run_command(kExe + " curvature -o " + dir + "/out.csv --smooth-normals -1");
@@ -130,4 +131,22 @@ TEST_CASE("kappa curvature --help documents the columns and options", "[cli][cur
     for (const char* s : {"x,y,z,nx,ny,nz,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,a,b,c,d", "--smooth-normals",
                           "--smooth-curvature", "--smooth-dcurv", "--format", "--threads", "-o"})
         CHECK(r.output.find(s) != std::string::npos);
+}
+
+TEST_CASE("kappa curvature of a mesh with no faces says nothing could be estimated and writes zeros, never -0",
+          "[cli][curvature]") {
+    const std::string dir = kappa::test::temp_dir();
+    kappa::test::write_file(dir + "/points.ply",
+                            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                            "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n");
+    const auto r = run_command(kExe + " curvature " + dir + "/points.ply -o " + dir + "/out.csv");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("every vertex is flagged") != std::string::npos);
+    CHECK(r.output.find("(unflagged vertices)") == std::string::npos);
+    const std::string csv = kappa::test::read_file(dir + "/out.csv");
+    CHECK(csv.find("-0,") == std::string::npos);
+    CHECK(csv.find("-0\n") == std::string::npos);
+    CHECK(count_lines(csv) == 4);  // header and three rows
 }

@@ -40,7 +40,7 @@ TEST_CASE("OBJ: a file of vertices only is a point cloud", "[io][obj]") {
     CHECK(m.face_count() == 0);
 }
 
-TEST_CASE("OBJ: polygons up to 255 corners; larger ones are a clear error", "[io][obj]") {
+TEST_CASE("OBJ: polygons up to 255 corners, larger ones are a clear error", "[io][obj]") {
     auto polygon_file = [](int n) {
         std::string s;
         for (int i = 0; i < n; ++i)

@@ -130,11 +130,12 @@ TEST_CASE("write_csv: header, one row per vertex in order, %.9g values that read
     while (std::getline(in, line)) {
         REQUIRE(rows < 10000);
         std::vector<float> expected = row_of(s, rows);
-        // Same text as printf("%.9g") of every value, comma-separated.
+        // Same text as printf("%.9g") of every value, comma-separated; a
+        // zero is written 0, never -0.
         std::string printed;
         for (size_t k = 0; k < 18; ++k) {
             char buf[32];
-            std::snprintf(buf, sizeof buf, "%.9g", double(expected[k]));
+            std::snprintf(buf, sizeof buf, "%.9g", double(expected[k]) + 0.0);
             printed += (k ? "," : "") + std::string(buf);
         }
         if (line != printed) {

@@ -110,3 +110,50 @@ TEST_CASE("kappa render: errors are one clear line", "[render][cli]") {
         CHECK(r.output.find("bad.xf") != std::string::npos);
     }
 }
+
+TEST_CASE("kappa render writes JPEG for .jpg and .jpeg, and refuses other extensions before reading the mesh",
+          "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    for (const std::string name : {"a.jpg", "b.JPEG"}) {
+        const auto r = test::run_command(kappa_render("-q -o " + dir + "/" + name + " --size 64x48"));
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+        const std::string bytes = test::read_file(dir + "/" + name);
+        REQUIRE(bytes.size() > 3);
+        CHECK(uint8_t(bytes[0]) == 0xFF);  // JPEG start-of-image marker
+        CHECK(uint8_t(bytes[1]) == 0xD8);
+    }
+    // An unknown extension, a transparent JPEG: errors naming the file, before any work.
+    const auto bmp = test::run_command(kappa_render("no-such-mesh.ply -o " + dir + "/x.bmp"));
+    CHECK(bmp.exit_code == 2);
+    CHECK(bmp.output.find("x.bmp") != std::string::npos);
+    CHECK(bmp.output.find(".png, .jpg or .jpeg") != std::string::npos);
+    CHECK(test::count_lines(bmp.output) == 1);
+    const auto clear = test::run_command(kappa_render("-o " + dir + "/t.jpg --background transparent"));
+    CHECK(clear.exit_code == 2);
+    CHECK(clear.output.find("transparency") != std::string::npos);
+    CHECK(!std::filesystem::exists(dir + "/t.jpg"));
+}
+
+TEST_CASE("kappa render checks the output folder and the size before reading the mesh", "[render][cli]") {
+    // The mesh does not exist either: the message is about what is checked first.
+    const auto folder = test::run_command(kappa_render("no-such-mesh.ply -o /no/such/folder/x.png"));
+    CHECK(folder.exit_code == 1);
+    CHECK(folder.output.find("no such folder '/no/such/folder'") != std::string::npos);
+    CHECK(test::count_lines(folder.output) == 1);
+    const auto size = test::run_command(kappa_render("no-such-mesh.ply -o /tmp/x.png --size 100000x100000"));
+    CHECK(size.exit_code == 2);
+    CHECK(size.output.find("--size 100000x100000 is too large") != std::string::npos);
+}
+
+TEST_CASE("kappa render refuses a mesh with no faces in one line naming it", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/points.ply",
+                     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                     "element face 0\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+    const auto r = test::run_command(kappa_render(dir + "/points.ply -o " + dir + "/p.png"));
+    CHECK(r.exit_code == 1);
+    CHECK(r.output.find("points.ply: the mesh has no faces") != std::string::npos);
+    CHECK(test::count_lines(r.output) == 1);
+    CHECK(!std::filesystem::exists(dir + "/p.png"));
+}

@@ -198,7 +198,7 @@ TEST_CASE("a view saved as .xf renders the same with kappa render --xf", "[viewe
     CHECK(mean_difference(run.image("zoomed.png"), 0, run.image("raw.png"), 0, kWidth - kPanel, kHeight) > 0.05);
 }
 
-TEST_CASE("script errors name the file and line; the viewer exits 1", "[viewer][window]") {
+TEST_CASE("script errors name the file and line and the viewer exits 1", "[viewer][window]") {
     const std::string dir = test::temp_dir();
     test::write_file(dir + "/bad.txt", "frames 1\n\ndrag 1 2 three 4\n");
     const auto r = test::run_command(std::string(KAPPA_EXE) + " view --script " + dir + "/bad.txt");

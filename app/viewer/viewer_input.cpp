@@ -3,7 +3,7 @@
 
 #include "app/viewer/screenshot.h"
 #include "render/camera.h"
-#include "render/png_writer.h"
+#include "render/image_writer.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -164,7 +164,7 @@ void ViewerApp::save_screenshot(const std::string& path, bool with_panel) {
         const render::Image image = with_panel ? read_window(fb.x, fb.y)
                                                : render::render_to_image(*renderer_, camera(), state_.settings,
                                                                          a.pixels.x, a.pixels.y);
-        render::write_png(path, image);
+        render::write_image(path, image);
         report("wrote " + path);
     } catch (const std::exception& e) {
         report(e.what(), true);

@@ -27,7 +27,8 @@ void format_rows(const Mesh& mesh, const SurfaceFields& fields, size_t begin, si
     for (size_t i = begin; i < end; ++i) {
         field_row(mesh, fields, i, row);
         for (size_t k = 0; k < kFieldColumnCount; ++k) {
-            p = std::to_chars(p, limit, row[k], std::chars_format::general, 9).ptr;
+            // + 0.0f turns -0 into 0: a zero is written as 0, never -0.
+            p = std::to_chars(p, limit, row[k] + 0.0f, std::chars_format::general, 9).ptr;
             *p++ = k + 1 < kFieldColumnCount ? ',' : '\n';
         }
     }

@@ -44,4 +44,16 @@ void OutputFile::fail(const std::string& what, int error) {
     fail_write(path_, what + ": " + std::strerror(error));
 }
 
+std::optional<std::string> output_problem(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    struct stat st {};
+    if (stat(folder.c_str(), &st) != 0) return "no such folder '" + folder + "'";
+    if (!S_ISDIR(st.st_mode)) return "'" + folder + "' is not a folder";
+    if (access(folder.c_str(), W_OK) != 0) return "cannot write in '" + folder + "' (" + std::strerror(errno) + ")";
+    struct stat file {};
+    if (stat(path.c_str(), &file) == 0 && S_ISDIR(file.st_mode)) return "'" + path + "' is a folder";
+    return std::nullopt;
+}
+
 }  // namespace kappa::io

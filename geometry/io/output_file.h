@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -26,5 +27,10 @@ private:
     std::string path_;
     int fd_ = -1;
 };
+
+// Whether a file could be created at `path` (its folder exists and is
+// writable), checked before any long computation: nullopt when so, else the
+// reason ("no such folder 'out'").
+std::optional<std::string> output_problem(const std::string& path);
 
 }  // namespace kappa::io

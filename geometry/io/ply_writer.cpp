@@ -37,7 +37,7 @@ std::string smoothing_comment(const SurfaceFields& fields) {
 std::string ply_header(const Mesh& mesh, const SurfaceFields& fields, bool binary) {
     std::string h = "ply\nformat ";
     h += binary ? "binary_little_endian 1.0\n" : "ascii 1.0\n";
-    h += "comment written by kappa: curvature per vertex (Rusinkiewicz 2004), see conventions.md\n";
+    h += "comment written by kappa: curvature per vertex (Rusinkiewicz 2004), columns as in kappa's README\n";
     h += smoothing_comment(fields);
     h += "element vertex " + std::to_string(mesh.vertex_count()) + "\n";
     for (const char* column : kFieldColumnNames) h += std::string("property float ") + column + "\n";
@@ -47,10 +47,10 @@ std::string ply_header(const Mesh& mesh, const SurfaceFields& fields, bool binar
     return h;
 }
 
-// Shortest representation that reads back to the same float.
+// Shortest representation that reads back to the same float (0, never -0).
 void append_number(std::string& out, float value) {
     char buffer[32];
-    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value + 0.0f);
     out.append(buffer, result.ptr);
 }
 
