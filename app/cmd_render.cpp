@@ -12,6 +12,7 @@
 #include "geometry/io/mesh_io.h"
 #include "geometry/io/output_file.h"
 #include "geometry/surface_analysis.h"
+#include "geometry/view/default_view.h"
 #include "render/camera.h"
 #include "render/detail_fields.h"
 #include "render/egl_context.h"
@@ -71,6 +72,7 @@ cli::Parser::Setter word(E& out, std::optional<E> (*parse)(const std::string&)) 
 
 int run_render(int argc, char** argv) {
     std::string mesh_path, out_path, xf_path;
+    std::optional<ViewAngles> view_angles;
     glm::ivec2 size{1024, 768};
     glm::vec3 eye{0}, target{0}, up{0, 1, 0};
     float fov = 30.0f;
@@ -86,7 +88,21 @@ int run_render(int argc, char** argv) {
     p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl); default: the built-in model", false)
         .text("-o,--output", out_path, "output image: .png, or .jpg/.jpeg (opaque background only)", "OUT.png")
         .size("--size", size, "image size in pixels (default 1024x768)")
-        .vec3("--eye", eye, "camera position (default: framing the model's bounding sphere from +z)")
+        .option("--view", "AZ,EL",
+                "view from azimuth AZ (degrees around the y axis, 0 = from +z, 90 = from +x) and elevation EL "
+                "(degrees above the xz plane), framing the model (default: a three-quarter view chosen per "
+                "mesh, README 'Default view')",
+                [&](const std::string& v) {
+                    const auto parts = cli::split(v, ',');
+                    if (parts.size() != 2) return false;
+                    const auto az = cli::parse_number(parts[0]), el = cli::parse_number(parts[1]);
+                    if (!az || !el || !std::isfinite(*az) || !(std::fabs(*el) <= 90)) return false;
+                    view_angles = ViewAngles{float(*az), float(*el)};
+                    return true;
+                },
+                "two numbers AZ,EL in degrees, EL in [-90, 90]")
+        .vec3("--eye", eye, "camera position; without --target, only its direction counts and the model stays "
+              "framed (default: the default view)")
         .vec3("--target", target, "point the camera looks at (default: the bounding sphere's centre)")
         .vec3("--up", up, "camera up direction (default 0,1,0)")
         .number("--fov", fov, "vertical field of view in degrees (default 30; with --xf the one rtsc uses for "
@@ -162,8 +178,12 @@ int run_render(int argc, char** argv) {
         return 2;
     }
     const bool look_at = p.seen("--eye") || p.seen("--target") || p.seen("--up");
-    if (!xf_path.empty() && look_at) {
-        std::fprintf(stderr, "kappa render: --xf cannot be combined with --eye/--target/--up\n");
+    if (!xf_path.empty() && (look_at || view_angles)) {
+        std::fprintf(stderr, "kappa render: --xf cannot be combined with --view/--eye/--target/--up\n");
+        return 2;
+    }
+    if (view_angles && (p.seen("--eye") || p.seen("--target"))) {
+        std::fprintf(stderr, "kappa render: --view cannot be combined with --eye/--target\n");
         return 2;
     }
 
@@ -203,10 +223,16 @@ int run_render(int argc, char** argv) {
             camera.view = render::read_xf(xf_path);
             camera.fov_y_deg = p.seen("--fov") ? fov : render::rtsc_fov_y_deg(size.x, size.y);
         } else {
-            camera = render::Camera::framing(bounds, fov, aspect);
-            if (look_at) {
+            // The default view, or --view's angles, or --eye's direction: framed.
+            camera = view_angles ? render::Camera::framing(bounds, fov, aspect, view_direction(*view_angles))
+                     : p.seen("--eye") ? render::Camera::framing(bounds, fov, aspect, eye - bounds.center)
+                                       : render::Camera::default_view(mesh, bounds, fov, aspect);
+            if (p.seen("--target") || p.seen("--up")) {  // the user's own camera
                 if (!p.seen("--eye")) eye = camera.eye();
-                if (!p.seen("--target")) target = bounds.center;
+                if (!p.seen("--target")) {
+                    target = bounds.center;
+                    eye = camera.eye();  // framed along --eye's direction
+                }
                 if (glm::length(glm::cross(target - eye, up)) < 1e-12f * glm::length(target - eye) ||
                     glm::length(target - eye) == 0)
                     throw cli::UsageError("kappa render: --eye and --target must differ, and --up must not be "

@@ -1,5 +1,7 @@
 #include "render/camera.h"
 
+#include "geometry/view/default_view.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -32,12 +34,20 @@ Camera Camera::look_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fov_
     return c;
 }
 
-Camera Camera::framing(const BoundingSphere& sphere, float fov_y_deg, float aspect) {
+Camera Camera::framing(const BoundingSphere& sphere, float fov_y_deg, float aspect, glm::vec3 direction) {
     // The sphere touches the narrower side of the frustum: distance r / sin(half angle).
     const float half_y = glm::radians(fov_y_deg) * 0.5f;
     const float half_x = std::atan(std::tan(half_y) * aspect);
     const float distance = sphere.radius / std::sin(std::min(half_x, half_y));
-    return look_at(sphere.center + glm::vec3(0, 0, distance), sphere.center, glm::vec3(0, 1, 0), fov_y_deg);
+    const float len = glm::length(direction);
+    const glm::vec3 d = len > 0 && std::isfinite(len) ? direction / len : glm::vec3(0, 0, 1);
+    // y up, unless looking along y: then -z up (the top view's "north").
+    const glm::vec3 up = std::fabs(d.y) > 0.999f ? glm::vec3(0, 0, -d.y) : glm::vec3(0, 1, 0);
+    return look_at(sphere.center + distance * d, sphere.center, up, fov_y_deg);
+}
+
+Camera Camera::default_view(const Mesh& mesh, const BoundingSphere& sphere, float fov_y_deg, float aspect) {
+    return framing(sphere, fov_y_deg, aspect, view_direction(choose_default_view(mesh)));
 }
 
 glm::vec3 Camera::eye() const { return glm::vec3(glm::inverse(view)[3]); }

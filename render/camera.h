@@ -26,9 +26,13 @@ struct Camera {
     float fov_y_deg = 30;  // vertical field of view
 
     static Camera look_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fov_y_deg);
-    // Looks at the sphere's centre from +z, as close as the whole sphere
-    // fits in the image (aspect = width / height).
-    static Camera framing(const BoundingSphere& sphere, float fov_y_deg, float aspect);
+    // Looks at the sphere's centre from `direction` (from the centre towards
+    // the eye; default +z), y up, as close as the whole sphere fits in the
+    // image (aspect = width / height).
+    static Camera framing(const BoundingSphere& sphere, float fov_y_deg, float aspect,
+                          glm::vec3 direction = glm::vec3(0, 0, 1));
+    // kappa's default view of a mesh (geometry/view/default_view.h), framed.
+    static Camera default_view(const Mesh& mesh, const BoundingSphere& sphere, float fov_y_deg, float aspect);
 
     glm::vec3 eye() const;  // in model coordinates
     // Perspective projection with near/far planes tight around `sphere`.

@@ -37,8 +37,10 @@ glm::mat4 reorthonormalize(const glm::mat4& m, float scale) {
 
 }  // namespace
 
-void OrbitCamera::reset(const BoundingSphere& bounds, glm::vec2 viewport) {
-    view_ = Camera::framing(bounds, rtsc_fov_y_deg(int(viewport.x), int(viewport.y)), viewport.x / viewport.y).view;
+void OrbitCamera::reset(const BoundingSphere& bounds, glm::vec2 viewport, glm::vec3 direction) {
+    view_ = Camera::framing(bounds, rtsc_fov_y_deg(int(viewport.x), int(viewport.y)), viewport.x / viewport.y,
+                            direction)
+                .view;
     pivot_ = bounds.center;
     scale_ = 1;
 }

@@ -19,8 +19,9 @@ namespace kappa::render {
 
 class OrbitCamera {
 public:
-    // Frames `bounds` from +z (Camera::framing) and orbits about its centre.
-    void reset(const BoundingSphere& bounds, glm::vec2 viewport);
+    // Frames `bounds` from `direction` (centre towards the eye; Camera::framing)
+    // and orbits about its centre.
+    void reset(const BoundingSphere& bounds, glm::vec2 viewport, glm::vec3 direction = glm::vec3(0, 0, 1));
     // Frames `bounds` again from the current viewing direction.
     void fit(const BoundingSphere& bounds, glm::vec2 viewport);
     // Continues from a given model-view matrix (e.g. a .xf file).

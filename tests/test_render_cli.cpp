@@ -157,3 +157,25 @@ TEST_CASE("kappa render refuses a mesh with no faces in one line naming it", "[r
     CHECK(test::count_lines(r.output) == 1);
     CHECK(!std::filesystem::exists(dir + "/p.png"));
 }
+
+TEST_CASE("kappa render --view and --eye without --target frame the model from that direction", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    const std::string common = " -q --size 160x120 --shading none --msaa off -o " + dir;
+    // --view 90,0 looks from +x; --eye on the +x axis, near or far, frames the same picture.
+    REQUIRE(test::run_command(kappa_render("--view 90,0" + common + "/view.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render("--eye 5,0,0" + common + "/near.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render("--eye 1000,0,0" + common + "/far.png")).exit_code == 0);
+    const render::Image view = render::read_png(dir + "/view.png"), near = render::read_png(dir + "/near.png"),
+                        far = render::read_png(dir + "/far.png");
+    const bool same_near = view.pixels == near.pixels, same_far = view.pixels == far.pixels;
+    CHECK(same_near);
+    CHECK(same_far);
+    CHECK(test::count_ink(view) > 100);
+    // With --target the distance is the user's: from 1000 units away the model is a dot.
+    REQUIRE(test::run_command(kappa_render("--eye 1000,0,0 --target 0,0,0" + common + "/dot.png")).exit_code == 0);
+    CHECK(test::count_ink(render::read_png(dir + "/dot.png")) < test::count_ink(view) / 10);
+    // Bad angles and conflicting options: usage errors.
+    CHECK(test::run_command(kappa_render("--view 30" + common + "/x.png")).exit_code == 2);
+    CHECK(test::run_command(kappa_render("--view 30,100" + common + "/x.png")).exit_code == 2);
+    CHECK(test::run_command(kappa_render("--view 30,20 --eye 1,1,1" + common + "/x.png")).exit_code == 2);
+}

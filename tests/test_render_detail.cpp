@@ -172,17 +172,20 @@ TEST_CASE("Detail off draws the raw 1-ring lines, and explicit smoothing widths 
     s.shading = render::Shading::None;
     s.msaa = false;
     s.detail = 0;
-    const render::Camera camera = render::Camera::framing(render::bounding_sphere(mesh), 30.0f, 512.0f / 384.0f);
+    const render::Camera camera =
+        render::Camera::default_view(mesh, render::bounding_sphere(mesh), 30.0f, 512.0f / 384.0f);
     const render::Image expected = render::render_to_image(r, camera, s, 512, 384);
     const render::Image got = render::read_png(dir + "/off.png");
-    CHECK(got.pixels == expected.pixels);
+    const bool identical = got.pixels == expected.pixels;  // (not CHECK(a == b): Catch would print both images)
+    CHECK(identical);
 
     // The raw scan's scribbles are gone with detail: much less ink.
     const size_t ink_off = render::count_ink(got), ink_on = render::count_ink(render::read_png(dir + "/on.png"));
     INFO("ink: detail off " << ink_off << ", default detail " << ink_on);
     CHECK(ink_on < ink_off * 3 / 4);
     // With an explicit width the drawing is that width's, not the detail's.
-    CHECK(render::read_png(dir + "/widths.png").pixels != render::read_png(dir + "/on.png").pixels);
+    const bool differ = render::read_png(dir + "/widths.png").pixels != render::read_png(dir + "/on.png").pixels;
+    CHECK(differ);
     CHECK(widths.exit_code == 0);
 
     const auto bad = test::run_command(std::string(KAPPA_EXE) + common + "--detail -3 -o " + dir + "/bad.png");

@@ -2,6 +2,7 @@
 
 #include "app/mesh_source.h"
 #include "geometry/feature_size.h"
+#include "geometry/view/default_view.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/vertex_flags.h"
 
@@ -227,6 +228,8 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
                                   : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report));
         set_stage("feature size");
         if (fields->has_curvature()) m.feature_size = feature_size(*m.mesh, *fields);
+        set_stage("default view");
+        m.view_direction = view_direction(choose_default_view(*m.mesh));
         set_stage("scale space");
         m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields));
         m.fields_s = seconds_since(t);

@@ -38,6 +38,7 @@ struct Model {
     // The scale space for --detail; only the worker touches it after the
     // first view (fitting its levels as zooming needs them).
     std::shared_ptr<render::DetailSource> detail;
+    glm::vec3 view_direction{0, 0, 1};  // of the default view (geometry/view/default_view.h)
     SmoothingOptions smoothing;
     ModelSummary summary;
     StageTimes stages;

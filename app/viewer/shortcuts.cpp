@@ -23,7 +23,7 @@ const std::vector<Shortcut>& shortcuts() {
         {GLFW_KEY_RIGHT_BRACKET, 0, "]", Action::RaiseThreshold, "raise the suggestive-contour threshold"},
         {GLFW_KEY_LEFT_BRACKET, 0, "[", Action::LowerThreshold, "lower the suggestive-contour threshold"},
         {GLFW_KEY_F, 0, "F", Action::FitView, "fit the model to the window"},
-        {GLFW_KEY_R, 0, "R", Action::ResetView, "reset the view (from +z)"},
+        {GLFW_KEY_R, 0, "R", Action::ResetView, "reset the view (the default three-quarter view)"},
         {GLFW_KEY_TAB, 0, "Tab", Action::TogglePanel, "show/hide the panel"},
         {GLFW_KEY_F1, 0, "F1", Action::ToggleHelp, "this help"},
         {GLFW_KEY_SLASH, GLFW_MOD_SHIFT, "?", Action::ToggleHelp, "this help"},
