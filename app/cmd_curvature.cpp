@@ -56,7 +56,7 @@ int run_curvature(int argc, char** argv) {
     cli::Parser p("curvature", "[MESH] -o OUT.csv|OUT.ply [options]",
                   "Estimate per-vertex normals, principal curvatures and directions, and the derivative of "
                   "curvature C (Rusinkiewicz 2004), and write them as CSV or PLY.");
-    p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl); default: the built-in model", false)
+    p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl .gltf .glb); default: the built-in model", false)
         .text("-o,--output", out_path, "output file: .csv, or .ply (binary unless --format ply-ascii)", "OUT")
         .choice("--format", format, {"csv", "ply", "ply-ascii"},
                 "output format (default: from the output file's extension)")

@@ -60,7 +60,7 @@ int run_info(int argc, char** argv) {
                   "Print statistics of a mesh: counts, bounding box, edge lengths, connected\n"
                   "components, boundary edges and loops, non-manifold edges, degenerate faces,\n"
                   "isolated vertices, Euler characteristic (V - E + F) and feature size.");
-    p.positional("MESH", mesh_path, "mesh file (.ply, .obj, .off, .stl); default: the built-in model", false)
+    p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl .gltf .glb); default: the built-in model", false)
         .flag("--no-curvature", no_curvature, "skip the curvature estimate (no feature size; faster)")
         .flag("--timings", timings, "print the time of each step on stderr")
         .threads()

@@ -85,7 +85,7 @@ int run_render(int argc, char** argv) {
     cli::Parser p("render", "[MESH] -o OUT.png [options]",
                   "Draw a mesh headless (EGL, no display needed) with occluding and suggestive contours, "
                   "shading, curvature colour maps and hatching, and write an 8-bit RGBA PNG.");
-    p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl); default: the built-in model", false)
+    p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl .gltf .glb); default: the built-in model", false)
         .text("-o,--output", out_path, "output image: .png, or .jpg/.jpeg (opaque background only)", "OUT.png")
         .size("--size", size, "image size in pixels (default 1024x768)")
         .option("--view", "AZ,EL",

@@ -24,7 +24,7 @@ int run_view(int argc, char** argv) {
                   "Open a mesh in a window (GLFW, OpenGL 3.3) with a panel for every setting of 'kappa render'. "
                   "Left drag orbits, right or middle drag pans, the wheel zooms toward the cursor; F1 lists the "
                   "keyboard shortcuts.");
-    p.positional("MESH", o.mesh_path, "mesh file (.ply .obj .off .stl); default: the built-in model", false)
+    p.positional("MESH", o.mesh_path, "mesh file (.ply .obj .off .stl .gltf .glb); default: the built-in model", false)
         .size("--size", o.size, "window size (default 1280x800)")
         .text("--xf", o.xf_path, "start from this trimesh2/rtsc viewpoint file; Ctrl+S saves the view there",
               "FILE")

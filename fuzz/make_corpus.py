@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a small seed corpus for the fuzz targets: OUT/{ply,obj,off,stl}/.
+"""Writes a small seed corpus for the fuzz targets: OUT/{ply,obj,off,stl,gltf}/.
 
     python3 fuzz/make_corpus.py OUT
 """
@@ -88,9 +88,37 @@ def stl_seeds():
     return {"ascii.stl": text.encode(), "binary.stl": b}
 
 
+def gltf_seeds():
+    import base64, json
+    pts = [SQUARE[0], SQUARE[1], SQUARE[2], SQUARE[4]]
+    pos = b"".join(struct.pack("<3f", *p) for p in pts)
+    idx = struct.pack("<6H", 0, 1, 3, 1, 2, 3)
+    def doc(uri):
+        d = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+             "nodes": [{"mesh": 0, "translation": [1, 0, 0]}],
+             "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],
+             "buffers": [{"byteLength": len(pos) + len(idx)}],
+             "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(pos)},
+                             {"buffer": 0, "byteOffset": len(pos), "byteLength": len(idx)}],
+             "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 4,
+                            "min": [min(p[k] for p in pts) for k in range(3)],
+                            "max": [max(p[k] for p in pts) for k in range(3)]},
+                           {"bufferView": 1, "componentType": 5123, "type": "SCALAR", "count": 6}]}
+        if uri:
+            d["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(pos + idx).decode()
+        return json.dumps(d).encode()
+    j = doc(False)
+    j += b" " * (-len(j) % 4)
+    binary = pos + idx
+    binary += b"\0" * (-len(binary) % 4)
+    glb = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(j) + 8 + len(binary))
+    glb += struct.pack("<I", len(j)) + b"JSON" + j + struct.pack("<I", len(binary)) + b"BIN\0" + binary
+    return {"square.gltf": doc(True), "square.glb": glb}
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "fuzz-corpus"
-    groups = {"ply": ply_seeds(), "obj": obj_seeds(), "off": off_seeds(), "stl": stl_seeds()}
+    groups = {"ply": ply_seeds(), "obj": obj_seeds(), "off": off_seeds(), "stl": stl_seeds(), "gltf": gltf_seeds()}
     for fmt, seeds in groups.items():
         os.makedirs(os.path.join(out, fmt), exist_ok=True)
         for name, data in seeds.items():

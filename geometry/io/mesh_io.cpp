@@ -33,11 +33,13 @@ MeshFormat format_from_extension(const std::string& path) {
     if (ext == "obj") return MeshFormat::Obj;
     if (ext == "off") return MeshFormat::Off;
     if (ext == "stl") return MeshFormat::Stl;
+    if (ext == "gltf" || ext == "glb") return MeshFormat::Gltf;
     return MeshFormat::Unknown;
 }
 
 MeshFormat format_from_content(const char* data, size_t size) {
     if (io::looks_like_ply(data, size)) return MeshFormat::Ply;
+    if (io::looks_like_glb(data, size) || io::looks_like_gltf_json(data, size)) return MeshFormat::Gltf;
     if (io::looks_like_off(data, size)) return MeshFormat::Off;
     if (io::looks_like_binary_stl(data, size) || io::looks_like_ascii_stl(data, size)) return MeshFormat::Stl;
     if (looks_like_obj(data, size)) return MeshFormat::Obj;
@@ -52,9 +54,10 @@ Mesh read_mesh(const char* data, size_t size, MeshFormat format, const std::stri
         case MeshFormat::Obj: return read_obj(data, size, name);
         case MeshFormat::Off: return read_off(data, size, name);
         case MeshFormat::Stl: return read_stl(data, size, name);
+        case MeshFormat::Gltf: return read_gltf(data, size, name);
         case MeshFormat::Unknown: break;
     }
-    io::fail_load(name, "not a recognised mesh file (expected PLY, OBJ, OFF or STL)");
+    io::fail_load(name, "not a recognised mesh file (expected PLY, OBJ, OFF, STL or glTF)");
 }
 
 Mesh load_mesh(const std::string& path) {

@@ -1,6 +1,6 @@
 // Mesh input and output: the one header to include.
 //
-//   Mesh m = load_mesh("bunny.ply");          // .ply .obj .off .stl
+//   Mesh m = load_mesh("bunny.ply");          // .ply .obj .off .stl .gltf .glb
 //   write_csv("out.csv", m, fields);          // conventions.md columns
 //   write_ply("out.ply", m, fields);          // same values as properties
 //
@@ -9,6 +9,7 @@
 #pragma once
 
 #include "csv_io.h"
+#include "gltf_io.h"
 #include "io_errors.h"
 #include "obj_io.h"
 #include "off_io.h"
@@ -19,12 +20,12 @@
 
 namespace kappa {
 
-enum class MeshFormat { Unknown, Ply, Obj, Off, Stl };
+enum class MeshFormat { Unknown, Ply, Obj, Off, Stl, Gltf };
 
 // Format named by a path's extension (case-insensitive), or Unknown.
 MeshFormat format_from_extension(const std::string& path);
 // Format recognised from the first bytes (PLY magic, OFF keyword, binary STL
-// size, "solid", OBJ statements), or Unknown.
+// size, "solid", glTF's binary magic or JSON "asset", OBJ statements), or Unknown.
 MeshFormat format_from_content(const char* data, size_t size);
 
 // Reads a mesh from memory in the given format (Unknown: sniff the content).

@@ -1,0 +1,213 @@
+// glTF 2.0 reading (geometry/io/gltf_io.h): small files written here, as
+// JSON with an embedded base64 buffer or as a .glb container; every
+// triangle mode, indices, node transforms, scenes, and one-line errors.
+#include "test_support.h"
+
+#include "geometry/io/mesh_io.h"
+
+#include <glm/geometric.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace kappa;
+
+namespace {
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
+        if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
+        if (i + 2 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 2]));
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? table[v & 63] : '=';
+    }
+    return out;
+}
+
+template <typename T>
+std::string bytes_of(const std::vector<T>& v) {
+    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+// One mesh with one primitive: positions (float VEC3), optional uint16
+// indices, a mode; `nodes` and `scenes` JSON given by the test (the mesh is 0).
+struct Gltf {
+    std::vector<float> positions;
+    std::vector<uint16_t> indices;
+    int mode = 4;
+    std::string nodes = R"([{"mesh": 0}])";
+    std::string scenes = R"("scene": 0, "scenes": [{"nodes": [0]}])";
+    std::string extra_accessor;  // replaces the indices accessor when set
+
+    // The JSON, with the buffer as a data URI (uri empty: for a .glb BIN chunk).
+    std::string json(bool embedded = true) const {
+        const std::string buffer = bytes_of(positions) + bytes_of(indices);
+        const size_t vertex_bytes = positions.size() * 4;
+        float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+        for (size_t i = 0; i < positions.size(); ++i)
+            lo[i % 3] = std::min(lo[i % 3], positions[i]), hi[i % 3] = std::max(hi[i % 3], positions[i]);
+        std::string j = R"({"asset": {"version": "2.0"}, )" + scenes + R"(, "nodes": )" + nodes + ", ";
+        j += R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": )" + std::to_string(mode);
+        if (!indices.empty() || !extra_accessor.empty()) j += R"(, "indices": 1)";
+        j += "}]}], ";
+        j += R"("buffers": [{"byteLength": )" + std::to_string(buffer.size());
+        if (embedded) j += R"(, "uri": "data:application/octet-stream;base64,)" + base64(buffer) + "\"";
+        j += "}], ";
+        j += R"("bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" + std::to_string(vertex_bytes) + "}";
+        if (!indices.empty())
+            j += R"(, {"buffer": 0, "byteOffset": )" + std::to_string(vertex_bytes) + R"(, "byteLength": )" +
+                 std::to_string(indices.size() * 2) + "}";
+        j += "], ";
+        char bounds[200];
+        std::snprintf(bounds, sizeof bounds, R"("min": [%g, %g, %g], "max": [%g, %g, %g])", lo[0], lo[1], lo[2],
+                      hi[0], hi[1], hi[2]);
+        j += R"("accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": )" +
+             std::to_string(positions.size() / 3) + ", " + bounds + "}";
+        if (!extra_accessor.empty()) j += ", " + extra_accessor;
+        else if (!indices.empty())
+            j += R"(, {"bufferView": 1, "componentType": 5123, "type": "SCALAR", "count": )" +
+                 std::to_string(indices.size()) + "}";
+        j += "]}";
+        return j;
+    }
+
+    // The same as a .glb: header, JSON chunk, BIN chunk (4-byte aligned).
+    std::string glb() const {
+        std::string j = json(false), bin = bytes_of(positions) + bytes_of(indices);
+        while (j.size() % 4) j += ' ';
+        while (bin.size() % 4) bin += '\0';
+        auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+        std::string out = "glTF" + u32(2) + u32(uint32_t(12 + 8 + j.size() + 8 + bin.size()));
+        out += u32(uint32_t(j.size())) + "JSON" + j;
+        out += u32(uint32_t(bin.size())) + std::string("BIN\0", 4) + bin;
+        return out;
+    }
+};
+
+Mesh load(const std::string& name, const std::string& contents) {
+    const std::string path = test::temp_dir() + "/" + name;
+    test::write_file(path, contents);
+    return load_mesh(path);
+}
+
+glm::vec3 face_normal(const Mesh& m, size_t f) {
+    const Face& t = m.faces[f];
+    return glm::normalize(glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]));
+}
+
+std::string load_error(const std::string& name, const std::string& contents) {
+    try {
+        load(name, contents);
+    } catch (const MeshLoadError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("glTF: a triangle list, indexed or not, reads with its winding", "[io][gltf]") {
+    Gltf g;
+    g.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const Mesh tri = load("tri.gltf", g.json());
+    REQUIRE(tri.vertex_count() == 3);
+    REQUIRE(tri.face_count() == 1);
+    CHECK(tri.positions[1] == glm::vec3(1, 0, 0));
+    CHECK(face_normal(tri, 0).z == Approx(1));  // counter-clockwise seen from +z
+
+    Gltf quad;
+    quad.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    const Mesh q = load("quad.gltf", quad.json());
+    CHECK(q.vertex_count() == 4);
+    REQUIRE(q.face_count() == 2);
+    CHECK(face_normal(q, 0).z == Approx(1));
+    CHECK(face_normal(q, 1).z == Approx(1));
+}
+
+TEST_CASE("glTF: strips alternate their order and fans turn about the first vertex", "[io][gltf]") {
+    Gltf strip;
+    strip.positions = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 2, 0, 0};  // a zig-zag strip of 3 triangles
+    strip.mode = 5;
+    const Mesh s = load("strip.gltf", strip.json());
+    REQUIRE(s.face_count() == 3);
+    for (size_t f = 0; f < 3; ++f) CHECK(face_normal(s, f).z == Approx(-1));  // one orientation throughout
+
+    Gltf fan;
+    fan.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 1, 0};
+    fan.mode = 6;
+    const Mesh f = load("fan.gltf", fan.json());
+    REQUIRE(f.face_count() == 3);
+    for (size_t k = 0; k < 3; ++k) {
+        CHECK(f.faces[k][0] == 0);
+        CHECK(face_normal(f, k).z == Approx(1));
+    }
+
+    Gltf points = fan;
+    points.mode = 0;  // points only: nothing to draw
+    CHECK(load_error("points.gltf", points.json()).find("no triangles") != std::string::npos);
+}
+
+TEST_CASE("glTF: node transforms apply, parents first, and a mesh used twice is placed twice", "[io][gltf]") {
+    Gltf g;
+    g.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    // Node 0: translated by (10, 0, 0), child node 1 scales by 2 then turns 90 degrees about z.
+    g.nodes = R"([{"translation": [10, 0, 0], "children": [1]},
+                  {"mesh": 0, "rotation": [0, 0, 0.70710678, 0.70710678], "scale": [2, 2, 2]},
+                  {"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,5,1]}])";
+    g.scenes = R"("scenes": [{"nodes": [0, 2]}])";
+    const Mesh m = load("nodes.gltf", g.json());
+    REQUIRE(m.face_count() == 2);
+    REQUIRE(m.vertex_count() == 6);
+    // (1, 0, 0) scaled to (2, 0, 0), turned to (0, 2, 0), moved to (10, 2, 0).
+    CHECK(glm::length(m.positions[1] - glm::vec3(10, 2, 0)) < 1e-5f);
+    CHECK(glm::length(m.positions[4] - glm::vec3(1, 0, 5)) < 1e-5f);  // the matrix node: z + 5
+}
+
+TEST_CASE("glTF: the default scene is the one named by scene", "[io][gltf]") {
+    Gltf g;
+    g.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    g.nodes = R"([{"mesh": 0}, {"mesh": 0, "translation": [0, 0, 3]}])";
+    g.scenes = R"("scene": 1, "scenes": [{"nodes": [0]}, {"nodes": [1]}])";
+    const Mesh m = load("scenes.gltf", g.json());
+    REQUIRE(m.vertex_count() == 3);
+    CHECK(m.positions[0].z == 3.0f);
+}
+
+TEST_CASE("glTF: the binary container reads like the JSON, found by its magic too", "[io][gltf]") {
+    Gltf quad;
+    quad.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    const Mesh a = load("quad.glb", quad.glb());
+    const Mesh b = load("quad-without-extension", quad.glb());
+    const Mesh c = load("quad.gltf", quad.json());
+    CHECK(a.faces == c.faces);
+    CHECK(a.positions == c.positions);
+    CHECK(b.faces == c.faces);
+}
+
+TEST_CASE("glTF: bad files are one-line errors naming the file", "[io][gltf]") {
+    Gltf g;
+    g.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    g.indices = {0, 1, 7};
+    const std::string range = load_error("range.gltf", g.json());
+    CHECK(range.find("range.gltf") != std::string::npos);
+    CHECK(range.find("index 7 out of range") != std::string::npos);
+
+    Gltf outside;
+    outside.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    outside.extra_accessor = R"({"bufferView": 0, "byteOffset": 32, "componentType": 5123, "type": "SCALAR", "count": 3})";
+    CHECK(load_error("outside.gltf", outside.json()).find("outside its buffer") != std::string::npos);
+
+    const std::string json = load_error("broken.gltf", R"({"asset": {"version": "2.0"}, "meshes": [)");
+    CHECK(json.find("broken.gltf: glTF") != std::string::npos);
+    for (const std::string& e : {range, json}) CHECK(std::count(e.begin(), e.end(), '\n') == 0);
+}
