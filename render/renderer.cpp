@@ -61,7 +61,7 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     glViewport(0, 0, w, h);
     compositor_.draw(surface_fb_.color_texture(), lines_fb_.color_texture(), s.line_color);
-    if (mesh_ && s.colorbar) colorbar_.draw(s.colormap, mesh_->map_range(s.colormap), w, h);
+    if (mesh_ && s.colorbar) colorbar_.draw(s.colormap, mesh_->map_range(s.colormap), w, h, s.background);
     glBindVertexArray(0);
 }
 

@@ -1,6 +1,9 @@
 #include "render/screen_passes.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace kappa::render {
 
@@ -35,7 +38,7 @@ ColorBar::ColorBar()
 
 ColorBar::~ColorBar() { glDeleteVertexArrays(1, &vao_); }
 
-void ColorBar::draw(ColorMap map, float range, int width, int height) {
+void ColorBar::draw(ColorMap map, float range, int width, int height, glm::vec4 background) {
     if (map == ColorMap::None) return;
     const float margin = std::max(4.0f, 0.03f * float(std::min(width, height)));
     float w = std::max(8.0f, 0.035f * float(width)), h = 0.5f * float(height);
@@ -50,6 +53,38 @@ void ColorBar::draw(ColorMap map, float range, int width, int height) {
     program_.set("u_map_range", range);
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+
+    // Labels: values at the ends (and zero), right-aligned left of the bar.
+    const float scale = std::max(1.0f, std::floor(float(std::min(width, height)) / 500.0f));
+    const float luminance = 0.3f * background.r + 0.59f * background.g + 0.11f * background.b;
+    const glm::vec3 ink = background.a > 0.5f && luminance < 0.5f ? glm::vec3(0.9f) : glm::vec3(0.1f);
+    auto number = [](float v, bool plus) {
+        char text[32];
+        std::snprintf(text, sizeof text, plus && v > 0 ? "+%.3g" : "%.3g", double(v));
+        return std::string(text);
+    };
+    const float gap = 4.0f * scale;
+    auto left_of_bar = [&](const std::string& text, float y) {
+        labels_.draw(text, {rect.x - gap - labels_.width(text, scale), y}, scale, ink, width, height);
+    };
+    const float bottom = rect.y, top = rect.y + rect.w, middle = rect.y + 0.5f * rect.w;
+    if (map == ColorMap::DCurv) {
+        left_of_bar(number(range, false), top);
+        left_of_bar("0", bottom);
+    } else if (map == ColorMap::Principal) {  // k1 along x, k2 along y, both over [-range, range]
+        left_of_bar(number(range, true), top);
+        left_of_bar("k2", middle);
+        left_of_bar(number(-range, false), bottom);
+        const float below = bottom - gap - 0.5f * TextLabels::kHeight * scale;
+        labels_.draw(number(-range, false), {rect.x, below}, scale, ink, width, height);
+        const std::string right = number(range, true);
+        labels_.draw(right, {rect.x + rect.z - labels_.width(right, scale), below}, scale, ink, width, height);
+        labels_.draw("k1", {rect.x + 0.5f * (rect.z - labels_.width("k1", scale)), below}, scale, ink, width, height);
+    } else {
+        left_of_bar(number(range, true), top);
+        left_of_bar("0", middle);
+        left_of_bar(number(-range, false), bottom);
+    }
 }
 
 }  // namespace kappa::render

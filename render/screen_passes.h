@@ -4,6 +4,7 @@
 
 #include "render/render_settings.h"
 #include "render/shader_program.h"
+#include "render/text_labels.h"
 
 namespace kappa::render {
 
@@ -25,12 +26,15 @@ public:
     ColorBar();
     ~ColorBar();
     // A vertical bar at the right edge of a width x height viewport (a
-    // square for the two-dimensional principal map).
-    void draw(ColorMap map, float range, int width, int height);
+    // square for the two-dimensional principal map), with the values of its
+    // ends (and of zero for signed maps) written beside it, dark on a light
+    // background and light on a dark one.
+    void draw(ColorMap map, float range, int width, int height, glm::vec4 background);
 
 private:
     ShaderProgram program_;
     GLuint vao_ = 0;
+    TextLabels labels_;
 };
 
 }  // namespace kappa::render

@@ -179,3 +179,24 @@ TEST_CASE("kappa render --view and --eye without --target frame the model from t
     CHECK(test::run_command(kappa_render("--view 30,100" + common + "/x.png")).exit_code == 2);
     CHECK(test::run_command(kappa_render("--view 30,20 --eye 1,1,1" + common + "/x.png")).exit_code == 2);
 }
+
+TEST_CASE("kappa render --colorbar writes the values of the bar's ends and of zero beside it", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    const std::string common = " -q --size 600x300 --shading none --lines none --colormap mean -o " + dir;
+    REQUIRE(test::run_command(kappa_render("--colorbar" + common + "/bar.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(common + "/plain.png")).exit_code == 0);
+    const render::Image bar = render::read_png(dir + "/bar.png"), plain = render::read_png(dir + "/plain.png");
+    // The bar is half the height, centred, at the right edge; labels sit left of it
+    // (the model, framed in the middle 300 pixels, stays clear of x > 480).
+    auto dark_near_row = [](const render::Image& im, int row) {
+        int n = 0;
+        for (int y = row - 8; y <= row + 8; ++y)
+            for (int x = 480; x < 565; ++x) n += test::is_ink(im.at(x, y));
+        return n;
+    };
+    for (int row : {75, 150, 225}) {  // top (+range), zero, bottom (-range)
+        INFO("row " << row);
+        CHECK(dark_near_row(bar, row) > 10);
+        CHECK(dark_near_row(plain, row) == 0);
+    }
+}
