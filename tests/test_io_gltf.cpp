@@ -207,6 +207,13 @@ TEST_CASE("glTF: bad files are one-line errors naming the file", "[io][gltf]") {
     outside.extra_accessor = R"({"bufferView": 0, "byteOffset": 32, "componentType": 5123, "type": "SCALAR", "count": 3})";
     CHECK(load_error("outside.gltf", outside.json()).find("outside its buffer") != std::string::npos);
 
+    // Found by fuzz_gltf: a POSITION naming an accessor that does not exist.
+    Gltf missing;
+    missing.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::string text = missing.json();
+    text.replace(text.find(R"("POSITION": 0)"), 13, R"("POSITION": 5)");
+    CHECK(load_error("missing.gltf", text).find("POSITION: no such accessor") != std::string::npos);
+
     const std::string json = load_error("broken.gltf", R"({"asset": {"version": "2.0"}, "meshes": [)");
     CHECK(json.find("broken.gltf: glTF") != std::string::npos);
     for (const std::string& e : {range, json}) CHECK(std::count(e.begin(), e.end(), '\n') == 0);

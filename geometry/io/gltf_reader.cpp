@@ -87,7 +87,9 @@ void add_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
         return;  // points and lines
     const auto pos = prim.attributes.find("POSITION");
     if (pos == prim.attributes.end()) io::fail_load(name, "a triangle primitive has no POSITION");
-    const tinygltf::Accessor& pa = model.accessors.at(size_t(std::max(pos->second, 0)));
+    if (pos->second < 0 || size_t(pos->second) >= model.accessors.size())
+        io::fail_load(name, "POSITION: no such accessor");
+    const tinygltf::Accessor& pa = model.accessors[size_t(pos->second)];
     if (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || pa.type != TINYGLTF_TYPE_VEC3)
         io::fail_load(name, "POSITION must be float VEC3");
     const AccessorView positions = view_of(model, pos->second, 12, name, "POSITION");
