@@ -214,6 +214,12 @@ TEST_CASE("glTF: bad files are one-line errors naming the file", "[io][gltf]") {
     text.replace(text.find(R"("POSITION": 0)"), 13, R"("POSITION": 5)");
     CHECK(load_error("missing.gltf", text).find("POSITION: no such accessor") != std::string::npos);
 
+    // Found by fuzz_gltf: a transform that sends positions to infinity.
+    Gltf huge;
+    huge.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    huge.nodes = R"([{"mesh": 0, "scale": [1e39, 1, 1]}])";
+    CHECK(load_error("huge.gltf", huge.json()).find("not finite") != std::string::npos);
+
     const std::string json = load_error("broken.gltf", R"({"asset": {"version": "2.0"}, "meshes": [)");
     CHECK(json.find("broken.gltf: glTF") != std::string::npos);
     for (const std::string& e : {range, json}) CHECK(std::count(e.begin(), e.end(), '\n') == 0);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -98,6 +99,8 @@ void add_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
         float xyz[3];
         std::memcpy(xyz, positions.at(i), sizeof xyz);
         p[i] = glm::vec3(transform * glm::vec4(xyz[0], xyz[1], xyz[2], 1.0f));
+        if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y) || !std::isfinite(p[i].z))
+            io::fail_load(name, "glTF: a position is not finite (after the node transforms)");
     }
 
     std::vector<uint32_t> index;
