@@ -8,6 +8,7 @@
 #include "mesh_source.h"
 #include "progress_bar.h"
 
+#include "geometry/creases.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/io/output_file.h"
@@ -108,8 +109,13 @@ int run_render(int argc, char** argv) {
         .number("--fov", fov, "vertical field of view in degrees (default 30; with --xf the one rtsc uses for "
                 "that image size, so views saved there match)", 1, 170, "DEG")
         .text("--xf", xf_path, "trimesh2/rtsc viewpoint file (4x4 model-view matrix)", "FILE")
-        .option("--lines", "LIST", "lines to draw, comma list of: contours, suggestive, boundaries, none "
-                "(default contours,suggestive)", word(s.lines, render::parse_lines),
+        .option("--crease-angle", "DEG|auto|off",
+                "sharp edges: where faces turn by more than DEG degrees the mesh is split (normals and curvature "
+                "per side) and the edge drawn as a crease; auto (default): 40 on meshes made of flat and sharp "
+                "pieces, off on smooth ones",
+                word(s.crease_angle, render::parse_crease_angle), "auto, off, or degrees in [0, 180)")
+        .option("--lines", "LIST", "lines to draw, comma list of: contours, suggestive, boundaries, creases, none "
+                "(default contours,suggestive,creases)", word(s.lines, render::parse_lines),
                 "a comma list of contours, suggestive, boundaries, or none")
         .option("--shading", join(render::shading_names()), "surface shading (default lambert)",
                 word(s.shading, render::parse_shading), "one of " + cli::join(render::shading_names(), ", "))
@@ -189,10 +195,14 @@ int run_render(int argc, char** argv) {
 
     try {
         const auto t_load = Clock::now();
-        const Mesh mesh = load_mesh_or_default(mesh_path);
-        const double load_s = seconds_since(t_load);
-        if (mesh.face_count() == 0)
+        const Mesh input = load_mesh_or_default(mesh_path);
+        if (input.face_count() == 0)
             return cli::fail(mesh_display_name(mesh_path) + ": the mesh has no faces: nothing to draw");
+        // Sharp edges split the mesh: each side gets its own normals and curvature.
+        const float crease_angle = render::resolved_crease_angle(s.crease_angle, input);
+        const SplitMesh drawn = split_at_creases(input, find_creases(input, crease_angle));
+        const Mesh& mesh = drawn.mesh;
+        const double load_s = seconds_since(t_load);
 
         // Explicit smoothing widths override the detail setting (README, "kappa render").
         if (p.seen("--smooth-normals") || p.seen("--smooth-curvature") || p.seen("--smooth-dcurv")) s.detail = 0;
@@ -258,6 +268,9 @@ int run_render(int argc, char** argv) {
                         "%s %.3f s\n",
                         load_s, times.total(), times.normals, times.curvature, times.dcurv, times.smoothing,
                         s.detail > 0 ? "scale space" : "feature size", fs_s);
+            if (!drawn.creases.empty())
+                std::printf("  %zu sharp edges (faces turning by more than %g degrees)\n", drawn.creases.size(),
+                            crease_angle);
             if (s.detail > 0 && detail_source.noise_floor > 0)
                 std::printf("  scan noise: no detail finer than %.4g model units\n", detail_source.noise_floor);
             std::printf("  %s (context + shaders %.3f s)\n", context->description().c_str(), context_s);
@@ -278,10 +291,14 @@ int run_render(int argc, char** argv) {
                     fields = compute_fields();
                 render::DetailFields d = render::detail_fields(mesh, detail_source, fields, scales);
                 view_fs = d.feature_size;
-                if (i == 0) renderer.set_mesh(mesh, d.fields, view_fs, d.fine_normals);
+                if (i == 0) {
+                    renderer.set_mesh(mesh, d.fields, view_fs, d.fine_normals);
+                    renderer.set_creases(render::crease_end_points(drawn));
+                }
                 else renderer.update_fields(mesh, d.fields, view_fs, d.fine_normals);
             } else if (i == 0) {
                 renderer.set_mesh(mesh, fields, fs);
+                renderer.set_creases(render::crease_end_points(drawn));
             }
             const double upload_s = seconds_since(t_upload);
             if (!quiet && (i == 0 || s.detail > 0)) {

@@ -4,6 +4,8 @@
 #include "render/colormap.h"
 #include "render/mesh_buffers.h"
 
+#include <glm/geometric.hpp>
+
 #include <stdexcept>
 
 namespace kappa::render {
@@ -36,6 +38,23 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
         for (const SurfaceSample& p : seeds.points) u.samples.insert(u.samples.end(), {p.position, p.normal, p.direction});
     }
     return u;
+}
+
+std::vector<glm::vec3> crease_end_points(const SplitMesh& split) {
+    std::vector<glm::vec3> out;
+    out.reserve(split.creases.size() * 6);
+    const Mesh& m = split.mesh;
+    auto normal = [&](uint32_t f) {
+        const Face& t = m.faces[f];
+        const glm::vec3 c = glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
+        const float len = glm::length(c);
+        return len > 0 ? c / len : glm::vec3(0.0f);
+    };
+    for (size_t e = 0; e < split.creases.size(); ++e) {
+        const glm::vec3 na = normal(split.crease_faces[e].x), nb = normal(split.crease_faces[e].y);
+        for (uint32_t v : {split.creases[e].x, split.creases[e].y}) out.insert(out.end(), {m.positions[v], na, nb});
+    }
+    return out;
 }
 
 }  // namespace kappa::render

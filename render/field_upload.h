@@ -5,6 +5,7 @@
 // MeshBuffers::upload on the GL thread.
 #pragma once
 
+#include "geometry/creases.h"
 #include "geometry/face_clusters.h"
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
@@ -45,5 +46,10 @@ struct FieldUpload {
 FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                                  const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
                                  bool hatch_samples);
+
+// The crease pass's vertex data (MeshBuffers::set_creases): for each crease
+// of the split mesh, both end points, each with the unit normals of the
+// edge's two faces.
+std::vector<glm::vec3> crease_end_points(const SplitMesh& split);
 
 }  // namespace kappa::render

@@ -22,6 +22,9 @@ std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files, s
 LineRenderer::LineRenderer()
     : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl"})),
       boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})),
+      creases_({{GL_VERTEX_SHADER, {"crease_vert.glsl"}},
+                {GL_GEOMETRY_SHADER, {"line_quad.glsl", "crease_geom.glsl"}},
+                {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
       hatching_({{GL_VERTEX_SHADER, {"hatch_vert.glsl"}},
                  {GL_GEOMETRY_SHADER, {"line_quad.glsl", "hatch_geom.glsl"}},
                  {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {}
@@ -86,6 +89,12 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
                                                   s.sc_threshold, 0.5f * s.line_width + 2.0f));
         else
             mesh.draw_triangles();
+    }
+    if ((s.lines.creases || s.lines.contours) && mesh.crease_count() > 0) {
+        set_common(creases_, mesh, frame, s);
+        creases_.set("u_creases", int(s.lines.creases));
+        creases_.set("u_contours", int(s.lines.contours));
+        mesh.draw_creases();
     }
     if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {
         set_common(boundaries_, mesh, frame, s);

@@ -134,10 +134,35 @@ void MeshBuffers::upload(FieldUpload&& u) {
 }
 
 MeshBuffers::~MeshBuffers() {
-    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, edge_buffer_, sample_buffer_};
-    glDeleteBuffers(4, buffers);
-    const GLuint arrays[] = {vao_, edge_vao_, sample_vao_};
-    glDeleteVertexArrays(3, arrays);
+    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, edge_buffer_, sample_buffer_, crease_buffer_};
+    glDeleteBuffers(5, buffers);
+    const GLuint arrays[] = {vao_, edge_vao_, sample_vao_, crease_vao_};
+    glDeleteVertexArrays(4, arrays);
+}
+
+void MeshBuffers::set_creases(const std::vector<glm::vec3>& end_points) {
+    if (!crease_vao_) {
+        glGenVertexArrays(1, &crease_vao_);
+        glGenBuffers(1, &crease_buffer_);
+        glBindVertexArray(crease_vao_);
+        glBindBuffer(GL_ARRAY_BUFFER, crease_buffer_);
+        for (GLuint location = 0; location < 3; ++location) {
+            glEnableVertexAttribArray(location);
+            glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(glm::vec3),
+                                  reinterpret_cast<const void*>(location * sizeof(glm::vec3)));
+        }
+    }
+    glBindVertexArray(crease_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, crease_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(end_points.size() * sizeof(glm::vec3)), end_points.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    creases_ = end_points.size() / 6;
+}
+
+void MeshBuffers::draw_creases() const {
+    if (creases_ == 0) return;
+    glBindVertexArray(crease_vao_);
+    glDrawArrays(GL_LINES, 0, GLsizei(creases_ * 2));
 }
 
 void MeshBuffers::draw_triangles() const {

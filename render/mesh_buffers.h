@@ -40,6 +40,11 @@ public:
     void draw_triangles() const;       // GL_TRIANGLES over every face
     void draw_triangles(const std::vector<FaceRun>& runs) const;  // the faces of these runs (cluster order)
     void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
+    // Sharp edges: per end point its position and the normals of the edge's
+    // two faces (3 vec3 each, 2 end points an edge; shaders/crease_vert.glsl).
+    void set_creases(const std::vector<glm::vec3>& end_points);
+    void draw_creases() const;  // GL_LINES over every crease
+    size_t crease_count() const { return creases_; }
     void draw_hatch_samples(size_t count) const;  // GL_POINTS over the first `count` surface samples
 
     static constexpr size_t kHatchSamples = size_t(1) << 18;  // enough for dense hatching at 4x zoom
@@ -60,6 +65,8 @@ private:
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
     GLuint edge_vao_ = 0, edge_buffer_ = 0;
     GLuint sample_vao_ = 0, sample_buffer_ = 0;
+    GLuint crease_vao_ = 0, crease_buffer_ = 0;
+    size_t creases_ = 0;
     size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0, hatch_samples_ = 0;
     double surface_area_ = 0;
     float feature_size_ = 1;

@@ -1,5 +1,7 @@
 #include "render/render_settings.h"
 
+#include "geometry/creases.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -37,7 +39,7 @@ const std::vector<std::string>& hatching_names() {
     return n;
 }
 const std::vector<std::string>& line_names() {
-    static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "none"};
+    static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "creases", "none"};
     return n;
 }
 
@@ -46,7 +48,7 @@ std::optional<ColorMap> parse_colormap(const std::string& s) { return lookup<Col
 std::optional<Hatching> parse_hatching(const std::string& s) { return lookup<Hatching>(hatching_names(), s); }
 
 std::optional<LineSelection> parse_lines(const std::string& list) {
-    LineSelection l{false, false, false};
+    LineSelection l{false, false, false, false};
     std::vector<std::string> seen;
     size_t start = 0;
     for (;;) {
@@ -57,6 +59,7 @@ std::optional<LineSelection> parse_lines(const std::string& list) {
         if (word == "contours") l.contours = true;
         else if (word == "suggestive") l.suggestive = true;
         else if (word == "boundaries") l.boundaries = true;
+        else if (word == "creases") l.creases = true;
         else if (word != "none") return std::nullopt;
         if (comma == std::string::npos) break;
         start = comma + 1;
@@ -72,6 +75,19 @@ std::optional<float> parse_detail(const std::string& s) {
     const float x = std::strtof(s.c_str(), &end);
     if (s.empty() || end != s.c_str() + s.size() || !(x > 0 && x <= 1000)) return std::nullopt;
     return x;
+}
+
+std::optional<float> parse_crease_angle(const std::string& s) {
+    if (s == "auto") return -1.0f;
+    if (s == "off") return 0.0f;
+    char* end = nullptr;
+    const float x = std::strtof(s.c_str(), &end);
+    if (s.empty() || end != s.c_str() + s.size() || !(x >= 0 && x < 180)) return std::nullopt;
+    return x;
+}
+
+float resolved_crease_angle(float setting, const Mesh& mesh) {
+    return setting < 0 ? auto_crease_angle(mesh) : setting;
 }
 
 std::optional<glm::vec4> parse_background(const std::string& s) {
@@ -101,6 +117,7 @@ std::string to_string(const LineSelection& l) {
     if (l.contours) s += "contours";
     if (l.suggestive) s += std::string(s.empty() ? "" : ",") + "suggestive";
     if (l.boundaries) s += std::string(s.empty() ? "" : ",") + "boundaries";
+    if (l.creases) s += std::string(s.empty() ? "" : ",") + "creases";
     return s.empty() ? "none" : s;
 }
 

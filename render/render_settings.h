@@ -3,6 +3,8 @@
 // (its UI edits the same fields). Plain data, no OpenGL.
 #pragma once
 
+#include "geometry/mesh.h"
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -20,7 +22,8 @@ struct LineSelection {
     bool contours = true;     // occluding contours: zeros of n.v
     bool suggestive = true;   // suggestive contours: zeros of kr with Dw kr > threshold / fs^2
     bool boundaries = false;  // open mesh boundaries
-    bool any() const { return contours || suggestive || boundaries; }
+    bool creases = true;      // visible sharp edges (geometry/creases.h)
+    bool any() const { return contours || suggestive || boundaries || creases; }
 };
 
 struct RenderSettings {
@@ -29,6 +32,7 @@ struct RenderSettings {
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
     bool fade = true;                  // fade weak suggestive contours towards the threshold
     float detail = 12.0f;              // pixels: lines follow the surface at this scale (0 = off: the raw 1-ring fields)
+    float crease_angle = -1.0f;        // degrees between faces that make a sharp edge; -1 auto, 0 off (geometry/creases.h)
     glm::vec3 line_color{0, 0, 0};
 
     Shading shading = Shading::Lambert;
@@ -53,7 +57,7 @@ glm::vec3 unit_light_direction(const RenderSettings& settings);
 const std::vector<std::string>& shading_names();
 const std::vector<std::string>& colormap_names();
 const std::vector<std::string>& hatching_names();
-const std::vector<std::string>& line_names();  // contours, suggestive, boundaries, none
+const std::vector<std::string>& line_names();  // contours, suggestive, boundaries, creases, none
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<ColorMap> parse_colormap(const std::string& s);
 std::optional<Hatching> parse_hatching(const std::string& s);
@@ -61,6 +65,10 @@ std::optional<Hatching> parse_hatching(const std::string& s);
 std::optional<LineSelection> parse_lines(const std::string& list);
 // "off" (0) or a size in pixels in (0, 1000]: RenderSettings::detail.
 std::optional<float> parse_detail(const std::string& s);
+// "auto" (-1), "off" or "0" (0), or degrees in (0, 180): RenderSettings::crease_angle.
+std::optional<float> parse_crease_angle(const std::string& s);
+// The crease angle to use for this mesh: auto resolved (creases.h).
+float resolved_crease_angle(float setting, const Mesh& mesh);
 // "white", "transparent", "#rrggbb" (also "black").
 std::optional<glm::vec4> parse_background(const std::string& s);
 

@@ -18,6 +18,10 @@ void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, floa
     if (mesh_) mesh_->update_fields(mesh, fields, feature_size, fine_normals);
 }
 
+void Renderer::set_creases(const std::vector<glm::vec3>& end_points) {
+    if (mesh_) mesh_->set_creases(end_points);
+}
+
 void Renderer::upload_fields(FieldUpload&& prepared) {
     if (mesh_) mesh_->upload(std::move(prepared));
 }

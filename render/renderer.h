@@ -36,6 +36,8 @@ public:
     // New fields for the mesh already uploaded (same vertices and faces).
     void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                        const std::vector<glm::vec3>& fine_normals = {});
+    // Sharp edges of the uploaded mesh (crease_end_points, field_upload.h).
+    void set_creases(const std::vector<glm::vec3>& end_points);
     // Fields prepared on another thread (render/field_upload.h).
     void upload_fields(FieldUpload&& prepared);
     const MeshBuffers* mesh() const { return mesh_.get(); }

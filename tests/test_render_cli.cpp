@@ -4,6 +4,7 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
+#include "geometry/view/default_view.h"
 #include "render/camera.h"
 #include "render/png_writer.h"
 
@@ -199,4 +200,80 @@ TEST_CASE("kappa render --colorbar writes the values of the bar's ends and of ze
         CHECK(dark_near_row(bar, row) > 10);
         CHECK(dark_near_row(plain, row) == 0);
     }
+}
+
+namespace {
+
+// The unit cube as an OBJ file (two triangles a face).
+std::string cube_obj() {
+    return "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+           "f 1 5 7\nf 1 7 3\nf 2 4 8\nf 2 8 6\nf 1 2 6\nf 1 6 5\n"
+           "f 3 7 8\nf 3 8 4\nf 1 3 4\nf 1 4 2\nf 5 6 8\nf 5 8 7\n";
+}
+
+bool ink_within(const render::Image& im, glm::vec2 p, float r) {
+    for (int y = int(p.y - r); y <= int(p.y + r); ++y)
+        for (int x = int(p.x - r); x <= int(p.x + r); ++x)
+            if (x >= 0 && y >= 0 && x < im.width && y < im.height && test::is_ink(im.at(x, y))) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("A cube draws every visible edge once, unbroken, and no hidden one", "[render][cli][creases]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/cube.obj", cube_obj());
+    const auto r = test::run_command(kappa_render(dir + "/cube.obj -o " + dir + "/cube.png --size 400x300 "
+                                                  "--shading none --msaa off --view 30,20"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("12 sharp edges") != std::string::npos);
+    const render::Image im = render::read_png(dir + "/cube.png");
+    Mesh cube;
+    for (int i = 0; i < 8; ++i) cube.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
+    const render::BoundingSphere bounds = render::bounding_sphere(cube);
+    const render::Camera camera = render::Camera::framing(bounds, 30.0f, 400.0f / 300.0f, view_direction({30, 20}));
+    const glm::vec3 eye = camera.eye();
+    // The 12 edges (corners differing in one coordinate); visible when one of
+    // their two faces faces the eye.
+    int visible_edges = 0;
+    for (int a = 0; a < 8; ++a)
+        for (int bit : {1, 2, 4}) {
+            const int b = a | bit;
+            if (b == a) continue;
+            const glm::vec3 p = cube.positions[size_t(a)], q = cube.positions[size_t(b)];
+            bool visible = false;
+            for (int other : {1, 2, 4}) {  // the two faces: the other two axes, at this edge's side
+                if (other == bit) continue;
+                const int axis = other == 1 ? 0 : other == 2 ? 1 : 2;
+                glm::vec3 n(0.0f);
+                n[axis] = (a & other) ? 1.0f : -1.0f;
+                visible |= glm::dot(n, eye - p) > 0;
+            }
+            int inked = 0, samples = 0;
+            for (float t = 0.05f; t < 0.96f; t += 0.01f, ++samples)  // every pixel or so along the edge
+                inked += ink_within(im, test::project(camera, bounds, glm::mix(p, q, t), 400, 300), 1.5f);
+            INFO("edge " << a << "-" << b << (visible ? " visible" : " hidden") << ": " << inked << " of " << samples);
+            if (visible) {
+                ++visible_edges;
+                CHECK(inked == samples);  // drawn all along: no gap
+            } else {
+                CHECK(inked < samples / 4);  // hidden: only where it crosses a visible edge
+            }
+        }
+    CHECK(visible_edges == 9);
+}
+
+TEST_CASE("Creases change nothing on smooth meshes, and can be turned off", "[render][cli][creases]") {
+    const std::string dir = test::temp_dir();
+    const std::string spot = test::shared_mesh("spot.obj");
+    const std::string common = " -q --size 200x150 --shading none -o " + dir;
+    REQUIRE(test::run_command(kappa_render(spot + common + "/auto.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(spot + " --crease-angle off" + common + "/off.png")).exit_code == 0);
+    const bool same = render::read_png(dir + "/auto.png").pixels == render::read_png(dir + "/off.png").pixels;
+    CHECK(same);
+    test::write_file(dir + "/cube.obj", cube_obj());
+    const auto off = test::run_command(kappa_render(dir + "/cube.obj --crease-angle off" + common + "/c.png"));
+    CHECK(off.output.find("sharp edges") == std::string::npos);
+    CHECK(test::run_command(kappa_render(dir + "/cube.obj --crease-angle 200" + common + "/x.png")).exit_code == 2);
 }

@@ -1,8 +1,10 @@
 #include "app/viewer/background_compute.h"
 
 #include "app/mesh_source.h"
+#include "geometry/creases.h"
 #include "geometry/feature_size.h"
 #include "geometry/view/default_view.h"
+#include "render/render_settings.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/vertex_flags.h"
 
@@ -51,10 +53,12 @@ BackgroundCompute::~BackgroundCompute() {
     worker_.join();
 }
 
-void BackgroundCompute::load(const std::string& path, const SmoothingOptions& smoothing, bool normals_first) {
+void BackgroundCompute::load(const std::string& path, const SmoothingOptions& smoothing, bool normals_first,
+                             float crease_angle) {
     Request r;
     r.path = path;
     r.smoothing = smoothing;
+    r.crease_angle = crease_angle;
     r.normals_first = normals_first && !smoothing.automatic && !(smoothing.normals > 0) &&
                       !(smoothing.curvature > 0) && !(smoothing.dcurv > 0);
     submit(std::move(r));
@@ -94,6 +98,8 @@ void BackgroundCompute::recompute(const Model& model, const SmoothingOptions& sm
     r.path = model.path;
     r.mesh = model.mesh;
     r.smoothing = smoothing;
+    r.crease_points = model.crease_points;
+    r.input_vertices = model.input_vertices;
     submit(std::move(r));
 }
 
@@ -212,10 +218,17 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
     try {
         if (request.mesh) {
             m.mesh = request.mesh;
+            m.crease_points = request.crease_points;
+            m.input_vertices = request.input_vertices;
         } else {
             set_stage("loading");
             const auto t = std::chrono::steady_clock::now();
-            m.mesh = std::make_shared<const Mesh>(app::load_mesh_or_default(request.path));
+            const Mesh input = app::load_mesh_or_default(request.path);
+            m.input_vertices = input.vertex_count();
+            SplitMesh split =
+                split_at_creases(input, find_creases(input, render::resolved_crease_angle(request.crease_angle, input)));
+            m.crease_points = render::crease_end_points(split);
+            m.mesh = std::make_shared<const Mesh>(std::move(split.mesh));
             m.load_s = seconds_since(t);
         }
         const auto t = std::chrono::steady_clock::now();

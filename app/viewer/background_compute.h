@@ -39,6 +39,8 @@ struct Model {
     // first view (fitting its levels as zooming needs them).
     std::shared_ptr<render::DetailSource> detail;
     glm::vec3 view_direction{0, 0, 1};  // of the default view (geometry/view/default_view.h)
+    std::vector<glm::vec3> crease_points;  // the crease pass's data (render/field_upload.h); `mesh` is split there
+    size_t input_vertices = 0;             // before the split
     SmoothingOptions smoothing;
     ModelSummary summary;
     StageTimes stages;
@@ -58,7 +60,10 @@ public:
     // normals_first (drawings at a detail scale need only the normals to
     // start), the model arrives with normals, areas and flags, and the full
     // per-vertex fields follow as a completion (take_completion).
-    void load(const std::string& path, const SmoothingOptions& smoothing, bool normals_first = false);
+    // crease_angle: RenderSettings::crease_angle (the mesh is split at its
+    // sharp edges, geometry/creases.h).
+    void load(const std::string& path, const SmoothingOptions& smoothing, bool normals_first = false,
+              float crease_angle = -1.0f);
     // Recomputes the fields of an already loaded mesh with new widths.
     void recompute(const Model& model, const SmoothingOptions& smoothing);
 
@@ -117,6 +122,9 @@ private:
         std::shared_ptr<const Mesh> mesh;  // set: recompute only
         SmoothingOptions smoothing;
         bool normals_first = false;
+        float crease_angle = -1.0f;
+        std::vector<glm::vec3> crease_points;  // recompute: the model's, kept
+        size_t input_vertices = 0;
         unsigned generation = 0;
     };
     void submit(Request request);

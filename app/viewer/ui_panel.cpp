@@ -35,6 +35,8 @@ void lines_section(render::RenderSettings& s) {
     ImGui::Checkbox("contours (C)", &s.lines.contours);
     ImGui::Checkbox("suggestive (S)", &s.lines.suggestive);
     ImGui::Checkbox("boundaries (B)", &s.lines.boundaries);
+    ImGui::Checkbox("creases", &s.lines.creases);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("sharp edges (--crease-angle, applied when a mesh is opened)");
     ImGui::SliderFloat("threshold", &s.sc_threshold, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("suggestive contours where Dw kr > s / fs^2 (dimensionless s)");
     bool detail_on = s.detail > 0;

@@ -72,6 +72,8 @@ const std::map<std::string, Setter>& setters() {
                    }}},
         {"detail", word<float>("a size in pixels (0 < PX <= 1000) or off", render::parse_detail,
                                [](ViewState& s) -> auto& { return s.settings.detail; })},
+        {"crease-angle", word<float>("auto, off, or degrees in [0, 180)", render::parse_crease_angle,
+                                     [](ViewState& s) -> auto& { return s.settings.crease_angle; })},
         {"colorbar", on_off([](ViewState& s) -> auto& { return s.settings.colorbar; })},
         {"fade", on_off([](ViewState& s) -> auto& { return s.settings.fade; })},
         {"msaa", on_off([](ViewState& s) -> auto& { return s.settings.msaa; })},

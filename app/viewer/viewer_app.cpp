@@ -42,7 +42,7 @@ ViewerApp::ViewerApp(ViewerOptions options) : options_(std::move(options)), stat
     if (!options_.xf_path.empty()) panel_.view_path = options_.xf_path;
     // Reading the mesh and estimating curvature overlap with opening the
     // window and compiling the shaders.
-    compute_.load(options_.mesh_path, state_.smoothing, effective_detail() > 0);
+    compute_.load(options_.mesh_path, state_.smoothing, effective_detail() > 0, state_.settings.crease_angle);
 }
 
 ViewerApp::~ViewerApp() {
@@ -175,6 +175,7 @@ void ViewerApp::adopt_results() {
         complete_fields();
         renderer_->set_mesh(*model_->mesh, *model_->fields, model_->feature_size);
     }
+    renderer_->set_creases(model_->crease_points);
     face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
     upload_s_ = float(seconds_since(t));
 }

@@ -152,7 +152,7 @@ void ViewerApp::handle_panel(const PanelRequests& r) {
 
 void ViewerApp::open_mesh(const std::string& path) {
     if (path.empty()) return report("type a mesh path first", true);
-    compute_.load(path, state_.smoothing, effective_detail() > 0);
+    compute_.load(path, state_.smoothing, effective_detail() > 0, state_.settings.crease_angle);
     report("opening " + path);
 }
 

@@ -42,8 +42,12 @@ bool ViewerApp::script_step() {
         case ScriptStep::Key: apply(find_shortcut(s.name)->action); break;
         case ScriptStep::Set: {
             const SmoothingOptions before = state_.smoothing;
+            const float crease_before = state_.settings.crease_angle;
             if (auto error = assign_setting(state_, s.name, s.value)) report(*error, true);
-            if (!same_smoothing(before, state_.smoothing)) compute_.recompute(*model_, state_.smoothing);
+            if (state_.settings.crease_angle != crease_before)  // the split changes: read the mesh again
+                open_mesh(model_->path);
+            else if (!same_smoothing(before, state_.smoothing))
+                compute_.recompute(*model_, state_.smoothing);
             break;
         }
         case ScriptStep::Panel: panel_.visible = s.flag; break;
