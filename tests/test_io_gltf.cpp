@@ -192,6 +192,16 @@ TEST_CASE("glTF: the binary container reads like the JSON, found by its magic to
     CHECK(a.faces == c.faces);
     CHECK(a.positions == c.positions);
     CHECK(b.faces == c.faces);
+
+    // An external buffer file next to the .gltf.
+    const std::string dir = test::temp_dir();
+    std::string external = quad.json(false);
+    external.replace(external.find(R"("byteLength": 60)"), 16, R"("byteLength": 60, "uri": "quad.bin")");
+    test::write_file(dir + "/quad.bin", bytes_of(quad.positions) + bytes_of(quad.indices));
+    test::write_file(dir + "/external.gltf", external);
+    const Mesh d = load_mesh(dir + "/external.gltf");
+    CHECK(d.faces == c.faces);
+    CHECK(d.positions == c.positions);
 }
 
 TEST_CASE("glTF: bad files are one-line errors naming the file", "[io][gltf]") {
@@ -219,6 +229,14 @@ TEST_CASE("glTF: bad files are one-line errors naming the file", "[io][gltf]") {
     huge.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     huge.nodes = R"([{"mesh": 0, "scale": [1e39, 1, 1]}])";
     CHECK(load_error("huge.gltf", huge.json()).find("not finite") != std::string::npos);
+
+    // Found by fuzz_gltf: a buffer whose uri names a folder (or nothing readable).
+    Gltf folder;
+    folder.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::string external = folder.json(false);
+    external.replace(external.find(R"("byteLength": 36)"), 16, R"("byteLength": 36, "uri": ".")");
+    const std::string folder_error = load_error("folder.gltf", external);
+    CHECK(folder_error.find("folder.gltf: glTF") != std::string::npos);
 
     const std::string json = load_error("broken.gltf", R"({"asset": {"version": "2.0"}, "meshes": [)");
     CHECK(json.find("broken.gltf: glTF") != std::string::npos);

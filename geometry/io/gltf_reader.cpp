@@ -13,7 +13,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <functional>
+
+#include <sys/stat.h>
 
 namespace kappa {
 
@@ -145,11 +148,41 @@ bool no_images(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;  // kappa reads geometry only
 }
 
+// External buffers: regular files only, read whole, no shell-style path
+// expansion (tinygltf's default expands "~" and "$VAR" with wordexp).
+bool regular_file(const std::string& path, void*) {
+    struct stat st {};
+    return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+std::string path_as_is(const std::string& path, void*) { return path; }
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* error, const std::string& path, void*) {
+    struct stat st {};
+    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
+        if (error) *error += "cannot read buffer file '" + path + "'";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out->resize(size_t(st.st_size));
+    if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(out->size()))) {
+        if (error) *error += "cannot read buffer file '" + path + "'";
+        return false;
+    }
+    return true;
+}
+
+bool no_writes(std::string* error, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (error) *error += "kappa does not write glTF";
+    return false;
+}
+
 }  // namespace
 
 Mesh read_gltf(const char* data, size_t size, const std::string& name) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(no_images, nullptr);
+    loader.SetFsCallbacks({regular_file, path_as_is, read_whole_file, no_writes, nullptr});
     tinygltf::Model model;
     std::string error, warning;
     const auto slash = name.find_last_of('/');
