@@ -277,3 +277,70 @@ TEST_CASE("Creases change nothing on smooth meshes, and can be turned off", "[re
     CHECK(off.output.find("sharp edges") == std::string::npos);
     CHECK(test::run_command(kappa_render(dir + "/cube.obj --crease-angle 200" + common + "/x.png")).exit_code == 2);
 }
+
+namespace {
+
+// A closed cylinder around z: n segments, flat caps as fans (OBJ text).
+std::string cylinder_obj(int n) {
+    std::string s;
+    for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < n; ++i) {
+            const double a = 2 * M_PI * i / n;
+            s += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " " + std::to_string(1.5 * k) + "\n";
+        }
+    s += "v 0 0 0\nv 0 0 1.5\n";
+    const int bottom = 2 * n + 1, top = 2 * n + 2;
+    for (int i = 0; i < n; ++i) {
+        const int a = i + 1, b = (i + 1) % n + 1, c = a + n, d = b + n;
+        s += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(d) + "\n";
+        s += "f " + std::to_string(a) + " " + std::to_string(d) + " " + std::to_string(c) + "\n";
+        s += "f " + std::to_string(bottom) + " " + std::to_string(b) + " " + std::to_string(a) + "\n";
+        s += "f " + std::to_string(top) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+    }
+    return s;
+}
+
+// Fraction of the model's outline pixels (mask pixels next to background)
+// with ink within 2 px in the line drawing of the same view.
+double outline_inked(const std::string& mesh, const std::string& dir, const std::string& view) {
+    const std::string common = " -q --size 400x300 --msaa off " + view + " -o " + dir;
+    const auto a = test::run_command(kappa_render(mesh + " --lines none --background white" + common + "/mask.png"));
+    const auto b = test::run_command(kappa_render(mesh + " --shading none" + common + "/lines.png"));
+    if (a.exit_code != 0 || b.exit_code != 0) return -1;
+    const render::Image mask = render::read_png(dir + "/mask.png"), lines = render::read_png(dir + "/lines.png");
+    auto object = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= mask.width || y >= mask.height) return false;
+        const render::Rgba c = mask.at(x, y);
+        return c.r < 250 || c.g < 250 || c.b < 250;  // shaded surface, not white paper
+    };
+    size_t outline = 0, inked = 0;
+    for (int y = 0; y < mask.height; ++y)
+        for (int x = 0; x < mask.width; ++x) {
+            if (!object(x, y) || (object(x - 1, y) && object(x + 1, y) && object(x, y - 1) && object(x, y + 1))) continue;
+            ++outline;
+            inked += ink_within(lines, {x + 0.5f, y + 0.5f}, 2.0f);
+        }
+    return outline ? double(inked) / double(outline) : 0.0;
+}
+
+}  // namespace
+
+TEST_CASE("Outlines are closed: every outline pixel of a cube, a cylinder and fandisk is drawn",
+          "[render][cli][creases]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/cube.obj", cube_obj());
+    test::write_file(dir + "/cylinder.obj", cylinder_obj(48));
+    struct Case {
+        std::string mesh, view;
+        double bound;
+    };
+    const Case cases[] = {{dir + "/cube.obj", "", 0.995},
+                          {dir + "/cylinder.obj", "", 0.995},
+                          {dir + "/cylinder.obj", "--view 0,10", 0.995},
+                          {test::shared_mesh("fandisk.obj"), "", 0.99}};
+    for (const Case& c : cases) {
+        const double f = outline_inked(c.mesh, dir, c.view);
+        INFO(c.mesh << " " << c.view << ": outline pixels with ink within 2 px " << f);
+        CHECK(f > c.bound);
+    }
+}
