@@ -3,6 +3,7 @@
 // uploaded once, then each view (one, or N with --turntable) is drawn by the
 // GLSL renderer in render/ into an offscreen framebuffer and written as an
 // 8-bit RGBA PNG.
+#include "appearance_settings.h"
 #include "cli_options.h"
 #include "commands.h"
 #include "mesh_source.h"
@@ -51,24 +52,6 @@ std::string numbered_path(const std::string& path, int index) {
     return has_ext ? path.substr(0, dot) + number + path.substr(dot) : path + number + ".png";
 }
 
-// "on"/"off" options.
-cli::Parser::Setter on_off(bool& out) {
-    return [&out](const std::string& v) {
-        if (v != "on" && v != "off") return false;
-        out = v == "on";
-        return true;
-    };
-}
-
-template <typename E>
-cli::Parser::Setter word(E& out, std::optional<E> (*parse)(const std::string&)) {
-    return [&out, parse](const std::string& v) {
-        auto e = parse(v);
-        if (e) out = *e;
-        return bool(e);
-    };
-}
-
 }  // namespace
 
 int run_render(int argc, char** argv) {
@@ -81,7 +64,6 @@ int run_render(int argc, char** argv) {
     bool quiet = false;
     SmoothingOptions smoothing;
     render::RenderSettings s;
-    const auto join = [](const std::vector<std::string>& v) { return cli::join(v, "|"); };
 
     cli::Parser p("render", "[MESH] -o OUT.png [options]",
                   "Draw a mesh headless (EGL, no display needed) with occluding and suggestive contours, "
@@ -108,44 +90,17 @@ int run_render(int argc, char** argv) {
         .vec3("--up", up, "camera up direction (default 0,1,0)")
         .number("--fov", fov, "vertical field of view in degrees (default 30; with --xf the one rtsc uses for "
                 "that image size, so views saved there match)", 1, 170, "DEG")
-        .text("--xf", xf_path, "trimesh2/rtsc viewpoint file (4x4 model-view matrix)", "FILE")
-        .option("--crease-angle", "DEG|auto|off",
-                "sharp edges: where faces turn by more than DEG degrees the mesh is split (normals and curvature "
-                "per side) and the edge drawn as a crease; auto (default): 40 on meshes made of flat and sharp "
-                "pieces, off on smooth ones",
-                word(s.crease_angle, render::parse_crease_angle), "auto, off, or degrees in [0, 180)")
-        .option("--lines", "LIST", "lines to draw, comma list of: contours, suggestive, boundaries, creases, none "
-                "(default contours,suggestive,creases)", word(s.lines, render::parse_lines),
-                "a comma list of contours, suggestive, boundaries, or none")
-        .option("--shading", join(render::shading_names()), "surface shading (default lambert)",
-                word(s.shading, render::parse_shading), "one of " + cli::join(render::shading_names(), ", "))
-        .vec3("--light", s.light_dir, "direction towards the light in camera coordinates (x right, y up, "
-              "z towards the viewer; default -0.35,0.45,1)")
-        .option("--colormap", join(render::colormap_names()), "curvature colour map (default none)",
-                word(s.colormap, render::parse_colormap), "one of " + cli::join(render::colormap_names(), ", "))
-        .flag("--colorbar", s.colorbar, "draw the colour map's legend at the right edge")
-        .option("--hatching", join(render::hatching_names()),
-                "principal-direction hatching: strokes along the min or max direction, or both (default none)",
-                word(s.hatching, render::parse_hatching), "one of " + cli::join(render::hatching_names(), ", "))
-        .number("--hatch-spacing", s.hatch_spacing, "pixels between hatching strokes in the darkest tone (default 4)", 2, 100, "PX")
-        .number("--sc-threshold", s.sc_threshold,
-                "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)", 0,
-                1e6, "S")
-        .option("--detail", "PX|off", "scale of the surface the lines follow, in pixels on screen: shape features "
-                "much smaller draw no lines (default 12; off: the paper's raw 1-ring estimate)",
-                word(s.detail, render::parse_detail),
-                "a size in pixels (0 < PX <= 1000) or off")
-        .number("--line-width", s.line_width, "line width in pixels (default 2)", 0.1, 64, "PX")
-        .option("--fade", "on|off", "fade weak suggestive contours (default on)", on_off(s.fade), "on or off")
-        .option("--background", "COLOR", "white, transparent, black or #rrggbb (default white)",
-                [&](const std::string& v) {
-                    auto c = render::parse_background(v);
-                    if (c) s.background = *c;
-                    return bool(c);
-                },
-                "white, transparent, black or #rrggbb")
-        .option("--msaa", "on|off", "4x multisampling of the surface (default on)", on_off(s.msaa), "on or off")
-        .integer("--turntable", turntable, "write N views around the model: OUT-000.png ... (default: one view)",
+        .text("--xf", xf_path, "trimesh2/rtsc viewpoint file (4x4 model-view matrix)", "FILE");
+    // Appearance: one table for render, view and the viewer's scripts (appearance_settings.h).
+    for (const AppearanceSetting& a : appearance_settings()) {
+        if (a.flag) {
+            p.flag("--" + a.name, s.*a.flag, a.help);
+            continue;
+        }
+        p.option("--" + a.name, a.metavar, a.help, [&s, &a](const std::string& v) { return a.set(s, v); },
+                 a.expects);
+    }
+    p.integer("--turntable", turntable, "write N views around the model: OUT-000.png ... (default: one view)",
                  1, 100000)
         .smoothing(smoothing)
         .flag("-q,--quiet", quiet, "print nothing but errors")

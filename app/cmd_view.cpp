@@ -3,6 +3,7 @@
 // option of `kappa render` is accepted here too and a view saved as .xf
 // renders identically headless. --frames/--screenshot/--script make scripted
 // runs for tests (under xvfb-run).
+#include "appearance_settings.h"
 #include "cli_options.h"
 #include "commands.h"
 
@@ -29,17 +30,17 @@ int run_view(int argc, char** argv) {
         .text("--xf", o.xf_path, "start from this trimesh2/rtsc viewpoint file; Ctrl+S saves the view there",
               "FILE")
         .flag("--no-panel", no_panel, "start with the panel hidden (Tab shows it)");
-    // Appearance and smoothing: the options of `kappa render`, same names and values.
-    for (const std::string& name : viewer::setting_names()) {
-        if (name == "colorbar") {  // a flag in `kappa render`
-            p.flag("--colorbar", o.state.settings.colorbar, "as in 'kappa render'");
+    // Appearance: the options of `kappa render` from the same table
+    // (app/appearance_settings.h); then the smoothing widths.
+    for (const AppearanceSetting& a : appearance_settings()) {
+        if (a.flag) {
+            p.flag("--" + a.name, o.state.settings.*a.flag, a.help);
             continue;
         }
-        p.option("--" + name, "VALUE", "as in 'kappa render'", [&o, name, &p](const std::string& v) {
-            if (auto error = viewer::assign_setting(o.state, name, v)) throw p.error(*error);
-            return true;
-        });
+        p.option("--" + a.name, a.metavar, a.help, [&o, &a](const std::string& v) { return a.set(o.state.settings, v); },
+                 a.expects);
     }
+    p.smoothing(o.state.smoothing);
     p.integer("--frames", o.frames, "draw N frames, save --screenshot, exit (scripted runs)", 1, 1000000)
         .text("--screenshot", o.screenshot, "PNG of the whole window, panel included, after --frames", "OUT.png")
         .text("--script", script_path,

@@ -1,5 +1,6 @@
 #include "app/viewer/view_state.h"
 
+#include "app/appearance_settings.h"
 #include "app/cli_options.h"
 
 #include <cstdio>
@@ -17,12 +18,6 @@ struct Setter {
     std::function<bool(ViewState&, const std::string&)> set;
 };
 
-std::optional<bool> parse_on_off(const std::string& v) {
-    if (v == "on") return true;
-    if (v == "off") return false;
-    return std::nullopt;
-}
-
 // A number in [lo, hi] into `field` of the state.
 Setter number(float lo, float hi, std::function<float&(ViewState&)> field) {
     char expects[64];
@@ -35,51 +30,11 @@ Setter number(float lo, float hi, std::function<float&(ViewState&)> field) {
             }};
 }
 
-Setter on_off(std::function<bool&(ViewState&)> field) {
-    return {"on or off", [=](ViewState& s, const std::string& v) {
-                auto b = parse_on_off(v);
-                if (b) field(s) = *b;
-                return bool(b);
-            }};
-}
-
-template <typename T>
-Setter word(const std::string& expects, std::optional<T> (*parse)(const std::string&),
-            std::function<T&(ViewState&)> field) {
-    return {expects, [=](ViewState& s, const std::string& v) {
-                auto e = parse(v);
-                if (e) field(s) = *e;
-                return bool(e);
-            }};
-}
-
+// The smoothing widths; the appearance settings come from
+// app/appearance_settings.h, the table `kappa render` uses too.
 const std::map<std::string, Setter>& setters() {
-    static const std::map<std::string, Setter> table = {
-        {"lines", word<render::LineSelection>("a comma list of contours, suggestive, boundaries, or none",
-                                              render::parse_lines, [](ViewState& s) -> auto& { return s.settings.lines; })},
-        {"shading", word<render::Shading>("one of " + cli::join(render::shading_names(), ", "), render::parse_shading,
-                                          [](ViewState& s) -> auto& { return s.settings.shading; })},
-        {"colormap", word<render::ColorMap>("one of " + cli::join(render::colormap_names(), ", "),
-                                            render::parse_colormap, [](ViewState& s) -> auto& { return s.settings.colormap; })},
-        {"hatching", word<render::Hatching>("one of " + cli::join(render::hatching_names(), ", "),
-                                            render::parse_hatching, [](ViewState& s) -> auto& { return s.settings.hatching; })},
-        {"background", word<glm::vec4>("white, transparent, black or #rrggbb", render::parse_background,
-                                       [](ViewState& s) -> auto& { return s.settings.background; })},
-        {"light", {"X,Y,Z", [](ViewState& s, const std::string& v) {
-                       auto d = cli::parse_vec3(v);
-                       if (d) s.settings.light_dir = *d;
-                       return bool(d);
-                   }}},
-        {"detail", word<float>("a size in pixels (0 < PX <= 1000) or off", render::parse_detail,
-                               [](ViewState& s) -> auto& { return s.settings.detail; })},
-        {"crease-angle", word<float>("auto, off, or degrees in [0, 180)", render::parse_crease_angle,
-                                     [](ViewState& s) -> auto& { return s.settings.crease_angle; })},
-        {"colorbar", on_off([](ViewState& s) -> auto& { return s.settings.colorbar; })},
-        {"fade", on_off([](ViewState& s) -> auto& { return s.settings.fade; })},
-        {"msaa", on_off([](ViewState& s) -> auto& { return s.settings.msaa; })},
-        {"hatch-spacing", number(2, 100, [](ViewState& s) -> auto& { return s.settings.hatch_spacing; })},
-        {"sc-threshold", number(0, 1e6f, [](ViewState& s) -> auto& { return s.settings.sc_threshold; })},
-        {"line-width", number(0.1f, 64, [](ViewState& s) -> auto& { return s.settings.line_width; })},
+    static const std::map<std::string, Setter> table = [] {
+        std::map<std::string, Setter> t = {
         {"smooth", {"auto or off", [](ViewState& s, const std::string& v) {
                         if (v != "auto" && v != "off") return false;
                         s.smoothing.automatic = v == "auto";
@@ -88,7 +43,11 @@ const std::map<std::string, Setter>& setters() {
         {"smooth-normals", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.normals; })},
         {"smooth-curvature", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.curvature; })},
         {"smooth-dcurv", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.dcurv; })},
-    };
+        };
+        for (const app::AppearanceSetting& a : app::appearance_settings())
+            t[a.name] = {a.expects, [&a](ViewState& s, const std::string& v) { return a.set(s.settings, v); }};
+        return t;
+    }();
     return table;
 }
 

@@ -1,0 +1,105 @@
+#include "app/appearance_settings.h"
+
+#include "app/cli_options.h"
+
+#include <cstdio>
+
+namespace kappa::app {
+
+namespace {
+
+using render::RenderSettings;
+using Set = std::function<bool(RenderSettings&, const std::string&)>;
+
+std::string range_text(float lo, float hi) {
+    char text[64];
+    std::snprintf(text, sizeof text, hi > 1e5f ? "a number >= %g" : "a number in [%g, %g]", double(lo), double(hi));
+    return text;
+}
+
+// A number in [lo, hi] into the field.
+Set number(float lo, float hi, float RenderSettings::*field) {
+    return [=](RenderSettings& s, const std::string& v) {
+        auto x = cli::parse_number(v);
+        if (!x || *x < lo || *x > hi) return false;
+        s.*field = float(*x);
+        return true;
+    };
+}
+
+Set on_off(bool RenderSettings::*field) {
+    return [=](RenderSettings& s, const std::string& v) {
+        if (v != "on" && v != "off") return false;
+        s.*field = v == "on";
+        return true;
+    };
+}
+
+template <typename T>
+Set word(std::optional<T> (*parse)(const std::string&), T RenderSettings::*field) {
+    return [=](RenderSettings& s, const std::string& v) {
+        auto e = parse(v);
+        if (e) s.*field = *e;
+        return bool(e);
+    };
+}
+
+std::string one_of(const std::vector<std::string>& names) { return "one of " + cli::join(names, ", "); }
+
+}  // namespace
+
+const std::vector<AppearanceSetting>& appearance_settings() {
+    using R = RenderSettings;
+    static const std::vector<AppearanceSetting> table = {
+        {"lines", "LIST",
+         "lines to draw, comma list of: contours, suggestive, boundaries, creases, none "
+         "(default contours,suggestive,creases)",
+         "a comma list of contours, suggestive, boundaries, creases, or none", word(render::parse_lines, &R::lines)},
+        {"detail", "PX|off",
+         "scale of the surface the lines follow, in pixels on screen: shape features much smaller draw no lines "
+         "(default 12; off: the paper's raw 1-ring estimate)",
+         "a size in pixels (0 < PX <= 1000) or off", word(render::parse_detail, &R::detail)},
+        {"crease-angle", "DEG|auto|off",
+         "sharp edges: where faces turn by more than DEG degrees the mesh is split (normals and curvature per "
+         "side) and the edge drawn as a crease; auto (default): 40 on meshes made of flat and sharp pieces, off on "
+         "smooth ones",
+         "auto, off, or degrees in [0, 180)", word(render::parse_crease_angle, &R::crease_angle)},
+        {"sc-threshold", "S",
+         "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)",
+         range_text(0, 1e6f), number(0, 1e6f, &R::sc_threshold)},
+        {"line-width", "PX", "line width in pixels (default 2)", range_text(0.1f, 64), number(0.1f, 64, &R::line_width)},
+        {"fade", "on|off", "fade weak suggestive contours (default on)", "on or off", on_off(&R::fade)},
+        {"shading", cli::join(render::shading_names(), "|"), "surface shading (default lambert)",
+         one_of(render::shading_names()), word(render::parse_shading, &R::shading)},
+        {"light", "X,Y,Z",
+         "direction towards the light in camera coordinates (x right, y up, z towards the viewer; "
+         "default -0.35,0.45,1)",
+         "X,Y,Z",
+         [](R& s, const std::string& v) {
+             auto d = cli::parse_vec3(v);
+             if (d) s.light_dir = *d;
+             return bool(d);
+         }},
+        {"colormap", cli::join(render::colormap_names(), "|"), "curvature colour map (default none)",
+         one_of(render::colormap_names()), word(render::parse_colormap, &R::colormap)},
+        {"colorbar", "on|off", "draw the colour map's legend, with its values, at the right edge", "on or off",
+         on_off(&R::colorbar), &R::colorbar},
+        {"hatching", cli::join(render::hatching_names(), "|"),
+         "principal-direction hatching: strokes along the min or max direction, or both (default none)",
+         one_of(render::hatching_names()), word(render::parse_hatching, &R::hatching)},
+        {"hatch-spacing", "PX", "pixels between hatching strokes in the darkest tone (default 4)", range_text(2, 100),
+         number(2, 100, &R::hatch_spacing)},
+        {"background", "COLOR", "white, transparent, black or #rrggbb (default white)",
+         "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)},
+        {"msaa", "on|off", "4x multisampling of the surface (default on)", "on or off", on_off(&R::msaa)},
+    };
+    return table;
+}
+
+const AppearanceSetting* find_appearance_setting(const std::string& name) {
+    for (const auto& s : appearance_settings())
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+}  // namespace kappa::app
