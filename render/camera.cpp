@@ -17,13 +17,13 @@ BoundingSphere bounding_sphere(const Mesh& mesh) {
     glm::vec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
     for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
     BoundingSphere s;
-    s.center = 0.5f * (lo + hi);
-    float r2 = 0;
+    s.center = glm::vec3(0.5 * (glm::dvec3(lo) + glm::dvec3(hi)));
+    double r2 = 0;  // in double: squares of coordinates near 1e20 overflow float
     for (const auto& p : mesh.positions) {
-        const glm::vec3 d = p - s.center;
+        const glm::dvec3 d = glm::dvec3(p) - glm::dvec3(s.center);
         r2 = std::max(r2, glm::dot(d, d));
     }
-    s.radius = r2 > 0 ? std::sqrt(r2) : 1.0f;
+    s.radius = r2 > 0 ? float(std::sqrt(r2)) : 1.0f;
     return s;
 }
 
