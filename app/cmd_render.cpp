@@ -231,8 +231,12 @@ int run_render(int argc, char** argv) {
             std::printf("  %s (context + shaders %.3f s)\n", context->description().c_str(), context_s);
         }
 
-        // The turntable turns around the camera's up axis through the target.
-        const glm::vec3 axis = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 1, 0, 0));
+        // The turntable turns around the model's y axis (the up of the default
+        // view and of --view) through the centre; with --xf or --up, around
+        // the camera's own up axis through the target.
+        const bool own_up = !xf_path.empty() || p.seen("--up");
+        const glm::vec3 axis =
+            own_up ? glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 1, 0, 0)) : glm::vec3(0, 1, 0);
         const int views = std::max(turntable, 1);
         for (int i = 0; i < views; ++i) {
             const render::Camera view =
