@@ -371,3 +371,22 @@ TEST_CASE("No suggestive contours from crease artefacts on a cube and a cylinder
     INFO("fandisk: " << split << " split, " << raw << " not split");
     CHECK(split * 10 < raw * 6);
 }
+
+TEST_CASE("A turntable turns around the model's vertical axis: a cube looks the same every quarter turn",
+          "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/cube.obj", cube_obj());
+    const auto r = test::run_command(
+        kappa_render(dir + "/cube.obj -q --size 200x150 --shading none --msaa off --turntable 4 -o " + dir + "/t.png"));
+    REQUIRE(r.exit_code == 0);
+    const render::Image first = render::read_png(dir + "/t-000.png");
+    for (const char* name : {"t-001.png", "t-002.png", "t-003.png"}) {
+        const render::Image other = render::read_png(dir + "/" + name);
+        REQUIRE(other.width == first.width);
+        size_t differ = 0;
+        for (int y = 0; y < first.height; ++y)
+            for (int x = 0; x < first.width; ++x) differ += test::is_ink(first.at(x, y)) != test::is_ink(other.at(x, y));
+        INFO(name << ": " << differ << " pixels differ in ink");
+        CHECK(differ < 30);  // rounding along the edges only
+    }
+}
