@@ -1,5 +1,6 @@
 #include "app/viewer/ui_panel.h"
 
+#include "app/appearance_settings.h"
 #include "app/viewer/shortcuts.h"
 
 #include <imgui.h>
@@ -30,47 +31,67 @@ bool enum_combo(const char* label, E& value, const std::vector<std::string>& nam
     return changed;
 }
 
+// The setting's help from the one table of settings (app/appearance_settings.h)
+// as the tooltip of the widget drawn last.
+void help_tooltip(const char* setting) {
+    if (!ImGui::IsItemHovered()) return;
+    if (const app::AppearanceSetting* a = app::find_appearance_setting(setting))
+        ImGui::SetTooltip("--%s: %s", a->name.c_str(), a->help.c_str());
+}
+
 void lines_section(render::RenderSettings& s) {
     if (!ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::Checkbox("contours (C)", &s.lines.contours);
+    help_tooltip("lines");
     ImGui::Checkbox("suggestive (S)", &s.lines.suggestive);
+    help_tooltip("lines");
     ImGui::Checkbox("boundaries (B)", &s.lines.boundaries);
+    help_tooltip("lines");
     ImGui::Checkbox("creases", &s.lines.creases);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("sharp edges (--crease-angle, applied when a mesh is opened)");
+    help_tooltip("crease-angle");
     ImGui::SliderFloat("threshold", &s.sc_threshold, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("suggestive contours where Dw kr > s / fs^2 (dimensionless s)");
+    help_tooltip("sc-threshold");
     bool detail_on = s.detail > 0;
-    if (ImGui::Checkbox("##detail on", &detail_on)) s.detail = detail_on ? 12.0f : 0.0f;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("off: the raw 1-ring estimate (the paper's lines)");
+    if (ImGui::Checkbox("##detail on", &detail_on)) s.detail = detail_on ? render::RenderSettings{}.detail : 0.0f;
+    help_tooltip("detail");
     ImGui::SameLine();
     if (detail_on) ImGui::SliderFloat("detail", &s.detail, 1.0f, 64.0f, "%.1f px", ImGuiSliderFlags_Logarithmic);
     else ImGui::TextUnformatted("detail off");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("lines follow the surface smoothed at this scale on screen: smaller features draw none");
+    help_tooltip("detail");
     ImGui::SliderFloat("line width", &s.line_width, 0.5f, 8.0f, "%.1f px");
+    help_tooltip("line-width");
     ImGui::Checkbox("fade weak lines (G)", &s.fade);
+    help_tooltip("fade");
     ImGui::ColorEdit3("line colour", &s.line_color.x, ImGuiColorEditFlags_NoInputs);
 }
 
 void surface_section(render::RenderSettings& s, float map_range) {
     if (!ImGui::CollapsingHeader("Surface", ImGuiTreeNodeFlags_DefaultOpen)) return;
     enum_combo("shading (L)", s.shading, render::shading_names());
+    help_tooltip("shading");
     ImGui::SliderFloat3("light", &s.light_dir.x, -1.0f, 1.0f, "%.2f");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("direction towards the light: x right, y up, z towards you");
+    help_tooltip("light");
     if (glm::length(s.light_dir) < 1e-3f) s.light_dir = {0, 0, 1};
     enum_combo("colour map (M)", s.colormap, render::colormap_names());
+    help_tooltip("colormap");
     if (s.colormap != ColorMap::None) {
         ImGui::Checkbox("colour bar (K)", &s.colorbar);
+        help_tooltip("colorbar");
         if (s.colormap == ColorMap::DCurv)
             ImGui::Text("range [0, %.4g]", map_range);
         else
             ImGui::Text("range [-%.4g, %.4g]", map_range, map_range);
     }
     enum_combo("hatching (H)", s.hatching, render::hatching_names());
-    if (s.hatching != render::Hatching::None)
+    help_tooltip("hatching");
+    if (s.hatching != render::Hatching::None) {
         ImGui::SliderFloat("spacing", &s.hatch_spacing, 2.0f, 30.0f, "%.1f px");
+        help_tooltip("hatch-spacing");
+    }
     ImGui::ColorEdit4("background", &s.background.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreview);
+    help_tooltip("background");
     ImGui::Checkbox("4x MSAA (A)", &s.msaa);
+    help_tooltip("msaa");
 }
 
 // Widths as multiples of the feature size are easier to choose than model units.
