@@ -10,6 +10,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "test_shapes.h"
+
 #include <catch2/catch.hpp>
 
 #include <set>
@@ -18,14 +20,6 @@ using namespace kappa;
 
 namespace {
 
-Mesh unit_cube() {
-    Mesh m;
-    for (int i = 0; i < 8; ++i) m.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
-    const Face faces[] = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
-                          {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
-    for (const Face& f : faces) m.faces.push_back(f);
-    return m;
-}
 
 // A closed cylinder around z: n segments, one ring of quads (two triangles
 // each), flat caps as fans around a centre vertex.
@@ -52,7 +46,7 @@ Mesh cylinder(int n) {
 }  // namespace
 
 TEST_CASE("Creases: the edges whose faces turn by more than the angle", "[creases]") {
-    const Mesh cube = unit_cube();
+    const Mesh cube = test::unit_cube();
     CHECK(find_creases(cube, 40).size() == 12);  // the diagonals of the square faces are flat
     CHECK(find_creases(cube, 95).empty());
     CHECK(find_creases(cube, 0).empty());        // 0: off
@@ -62,7 +56,7 @@ TEST_CASE("Creases: the edges whose faces turn by more than the angle", "[crease
 }
 
 TEST_CASE("Creases: the automatic default finds CAD edges and leaves smooth and scanned meshes alone", "[creases]") {
-    CHECK(auto_crease_angle(unit_cube()) == kAutoCreaseAngle);
+    CHECK(auto_crease_angle(test::unit_cube()) == kAutoCreaseAngle);
     CHECK(auto_crease_angle(cylinder(32)) == kAutoCreaseAngle);
     CHECK(auto_crease_angle(cylinder(12)) == kAutoCreaseAngle);
     const Mesh fandisk = load_mesh(test::shared_mesh("fandisk.obj"));
@@ -77,7 +71,7 @@ TEST_CASE("Creases: the automatic default finds CAD edges and leaves smooth and 
 }
 
 TEST_CASE("Creases: the split gives each side of a crease its own vertices", "[creases]") {
-    const Mesh cube = unit_cube();
+    const Mesh cube = test::unit_cube();
     const SplitMesh s = split_at_creases(cube, find_creases(cube, 40));
     // Every cube corner meets three faces of different planes: three copies each.
     CHECK(s.mesh.vertex_count() == 24);

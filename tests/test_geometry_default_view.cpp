@@ -4,25 +4,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "test_shapes.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
 using namespace kappa;
-
-namespace {
-
-Mesh unit_cube() {
-    Mesh m;
-    for (int i = 0; i < 8; ++i) m.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
-    // Counter-clockwise from outside: -x, +x, -y, +y, -z, +z.
-    const Face faces[] = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
-                          {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
-    for (const Face& f : faces) m.faces.push_back(f);
-    return m;
-}
-
-}  // namespace
 
 TEST_CASE("view_direction: azimuth around y from +z towards +x, elevation above the xz plane", "[view]") {
     auto near = [](glm::vec3 a, glm::vec3 b) { return glm::length(a - b) < 1e-6f; };
@@ -34,7 +22,7 @@ TEST_CASE("view_direction: azimuth around y from +z towards +x, elevation above 
 }
 
 TEST_CASE("The default view of a cube is a three-quarter view that sees three faces", "[view]") {
-    const Mesh cube = unit_cube();
+    const Mesh cube = test::unit_cube();
     const ViewAngles a = choose_default_view(cube);
     INFO("azimuth " << a.azimuth << ", elevation " << a.elevation);
     CHECK(std::fmod(std::fabs(a.azimuth), 90.0f) != 0.0f);  // never a plain front or side view
@@ -53,7 +41,7 @@ TEST_CASE("The default view of a cube is a three-quarter view that sees three fa
 }
 
 TEST_CASE("The default view does not depend on the order of the faces or on a mesh without area", "[view]") {
-    Mesh cube = unit_cube();
+    Mesh cube = test::unit_cube();
     const ViewAngles a = choose_default_view(cube);
     std::reverse(cube.faces.begin(), cube.faces.end());
     const ViewAngles b = choose_default_view(cube);
