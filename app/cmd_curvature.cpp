@@ -21,14 +21,6 @@ namespace kappa::app {
 
 namespace {
 
-std::string lower_extension(const std::string& path) {
-    const auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
-    std::string ext = path.substr(dot + 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -78,7 +70,7 @@ int run_curvature(int argc, char** argv) {
         return 2;
     }
     if (format.empty()) {
-        const std::string ext = lower_extension(out_path);
+        const std::string ext = io::lower_extension(out_path);
         if (ext == "csv" || ext == "ply") {
             format = ext;
         } else {

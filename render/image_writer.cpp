@@ -1,5 +1,6 @@
 #include "render/image_writer.h"
 
+#include "geometry/io/output_file.h"
 #include "render/png_writer.h"
 
 #include <stb/stb_image_write.h>
@@ -15,14 +16,6 @@ namespace kappa::render {
 
 namespace {
 
-std::string lower_extension(const std::string& path) {
-    const auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
-    std::string ext = path.substr(dot + 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 void write_jpeg(const std::string& path, const Image& image) {
     std::vector<uint8_t> rgb(size_t(image.width) * size_t(image.height) * 3);
     for (size_t i = 0; i < rgb.size() / 3; ++i) {
@@ -37,7 +30,7 @@ void write_jpeg(const std::string& path, const Image& image) {
 }  // namespace
 
 std::optional<ImageFormat> image_format_for(const std::string& path) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = io::lower_extension(path);
     if (ext == "png") return ImageFormat::Png;
     if (ext == "jpg" || ext == "jpeg") return ImageFormat::Jpeg;
     return std::nullopt;

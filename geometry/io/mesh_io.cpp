@@ -1,6 +1,7 @@
 #include "mesh_io.h"
 
 #include "file_bytes.h"
+#include "output_file.h"
 #include "ply_header.h"
 
 #include <algorithm>
@@ -24,11 +25,7 @@ bool looks_like_obj(const char* data, size_t size) {
 }  // namespace
 
 MeshFormat format_from_extension(const std::string& path) {
-    size_t dot = path.find_last_of('.');
-    size_t slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return MeshFormat::Unknown;
-    std::string ext = path.substr(dot + 1);
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = io::lower_extension(path);
     if (ext == "ply") return MeshFormat::Ply;
     if (ext == "obj") return MeshFormat::Obj;
     if (ext == "off") return MeshFormat::Off;

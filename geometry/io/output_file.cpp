@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 
@@ -42,6 +43,14 @@ void OutputFile::fail(const std::string& what, int error) {
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
     fail_write(path_, what + ": " + std::strerror(error));
+}
+
+std::string lower_extension(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
+    std::string ext = path.substr(dot + 1);
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
 }
 
 std::optional<std::string> output_problem(const std::string& path) {

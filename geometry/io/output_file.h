@@ -28,6 +28,10 @@ private:
     int fd_ = -1;
 };
 
+// The extension of a path's file name in lower case, without the dot ("" when
+// there is none): how kappa tells the formats of its inputs and outputs.
+std::string lower_extension(const std::string& path);
+
 // Whether a file could be created at `path` (its folder exists and is
 // writable), checked before any long computation: nullopt when so, else the
 // reason ("no such folder 'out'").
