@@ -52,9 +52,9 @@ const std::vector<AppearanceSetting>& appearance_settings() {
     using R = RenderSettings;
     static const std::vector<AppearanceSetting> table = {
         {"lines", "LIST",
-         "lines to draw, comma list of: contours, suggestive, boundaries, creases, none "
-         "(default contours,suggestive,creases)",
-         "a comma list of contours, suggestive, boundaries, creases, or none", word(render::parse_lines, &R::lines)},
+         "lines to draw, comma list of: contours, suggestive, boundaries, creases, ridges, valleys, parabolic, "
+         "mean-zero, none (default contours,suggestive,creases)",
+         "a comma list of " + cli::join(render::line_names(), ", "), word(render::parse_lines, &R::lines)},
         {"detail", "PX|off",
          "scale of the surface the lines follow, in pixels on screen: shape features much smaller draw no lines "
          "(default 12; off: the paper's raw 1-ring estimate)",
@@ -67,6 +67,9 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"sc-threshold", "S",
          "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)",
          range_text(0, 1e6f), number(0, 1e6f, &R::sc_threshold)},
+        {"rv-threshold", "S",
+         "ridges and valleys where the larger principal curvature |kmax| > S / fs, dimensionless (default 1.5)",
+         range_text(0, 1e6f), number(0, 1e6f, &R::rv_threshold)},
         {"line-width", "PX", "line width in pixels (default 2)", range_text(0.1f, 64), number(0.1f, 64, &R::line_width)},
         {"fade", "on|off", "fade weak suggestive contours (default on)", "on or off", on_off(&R::fade)},
         {"shading", cli::join(render::shading_names(), "|"), "surface shading (default lambert)",

@@ -22,6 +22,9 @@ std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files, s
 LineRenderer::LineRenderer()
     : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl"})),
       boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})),
+      curvature_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "curvature_lines_vert.glsl"}},
+                        {GL_GEOMETRY_SHADER, {"line_quad.glsl", "curvature_lines_geom.glsl"}},
+                        {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
       creases_({{GL_VERTEX_SHADER, {"crease_vert.glsl"}},
                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "crease_geom.glsl"}},
                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
@@ -89,6 +92,18 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
                                                   s.sc_threshold, 0.5f * s.line_width + 2.0f));
         else
             mesh.draw_triangles();
+    }
+    // Ridges, valleys, parabolic and mean-zero lines: every triangle (they do
+    // not depend on the view, so the contour pass's culling does not apply).
+    if (s.lines.curvature_lines()) {
+        set_common(curvature_lines_, mesh, frame, s);
+        curvature_lines_.set("u_parabolic", int(s.lines.parabolic));
+        curvature_lines_.set("u_mean_zero", int(s.lines.mean_zero));
+        curvature_lines_.set("u_ridges", int(s.lines.ridges));
+        curvature_lines_.set("u_valleys", int(s.lines.valleys));
+        curvature_lines_.set("u_rv_threshold", s.rv_threshold);
+        curvature_lines_.set("u_feature_size", mesh.feature_size());
+        mesh.draw_triangles();
     }
     if ((s.lines.creases || s.lines.contours) && mesh.crease_count() > 0) {
         set_common(creases_, mesh, frame, s);

@@ -39,7 +39,8 @@ const std::vector<std::string>& hatching_names() {
     return n;
 }
 const std::vector<std::string>& line_names() {
-    static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "creases", "none"};
+    static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "creases", "ridges",
+                                            "valleys",  "parabolic",  "mean-zero",  "none"};
     return n;
 }
 
@@ -48,7 +49,7 @@ std::optional<ColorMap> parse_colormap(const std::string& s) { return lookup<Col
 std::optional<Hatching> parse_hatching(const std::string& s) { return lookup<Hatching>(hatching_names(), s); }
 
 std::optional<LineSelection> parse_lines(const std::string& list) {
-    LineSelection l{false, false, false, false};
+    LineSelection l{false, false, false, false, false, false, false, false};
     std::vector<std::string> seen;
     size_t start = 0;
     for (;;) {
@@ -60,6 +61,10 @@ std::optional<LineSelection> parse_lines(const std::string& list) {
         else if (word == "suggestive") l.suggestive = true;
         else if (word == "boundaries") l.boundaries = true;
         else if (word == "creases") l.creases = true;
+        else if (word == "ridges") l.ridges = true;
+        else if (word == "valleys") l.valleys = true;
+        else if (word == "parabolic") l.parabolic = true;
+        else if (word == "mean-zero") l.mean_zero = true;
         else if (word != "none") return std::nullopt;
         if (comma == std::string::npos) break;
         start = comma + 1;
@@ -118,6 +123,10 @@ std::string to_string(const LineSelection& l) {
     if (l.suggestive) s += std::string(s.empty() ? "" : ",") + "suggestive";
     if (l.boundaries) s += std::string(s.empty() ? "" : ",") + "boundaries";
     if (l.creases) s += std::string(s.empty() ? "" : ",") + "creases";
+    if (l.ridges) s += std::string(s.empty() ? "" : ",") + "ridges";
+    if (l.valleys) s += std::string(s.empty() ? "" : ",") + "valleys";
+    if (l.parabolic) s += std::string(s.empty() ? "" : ",") + "parabolic";
+    if (l.mean_zero) s += std::string(s.empty() ? "" : ",") + "mean-zero";
     return s.empty() ? "none" : s;
 }
 

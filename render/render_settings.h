@@ -23,13 +23,20 @@ struct LineSelection {
     bool suggestive = true;   // suggestive contours: zeros of kr with Dw kr > threshold / fs^2
     bool boundaries = false;  // open mesh boundaries
     bool creases = true;      // visible sharp edges (geometry/creases.h)
-    bool any() const { return contours || suggestive || boundaries || creases; }
+    // View-independent curvature lines (shaders/curvature_lines_geom.glsl).
+    bool ridges = false;      // maxima of the larger-magnitude curvature along its direction, > 0
+    bool valleys = false;     // the same, < 0
+    bool parabolic = false;   // K = 0
+    bool mean_zero = false;   // H = 0
+    bool curvature_lines() const { return ridges || valleys || parabolic || mean_zero; }
+    bool any() const { return contours || suggestive || boundaries || creases || curvature_lines(); }
 };
 
 struct RenderSettings {
     LineSelection lines;
     float line_width = 2.0f;           // pixels, constant at any zoom
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
+    float rv_threshold = 1.5f;         // dimensionless; ridges and valleys where |kmax| > S / fs
     bool fade = true;                  // fade weak suggestive contours towards the threshold
     float detail = 12.0f;              // pixels: lines follow the surface at this scale (0 = off: the raw 1-ring fields)
     float crease_angle = -1.0f;        // degrees between faces that make a sharp edge; -1 auto, 0 off (geometry/creases.h)
@@ -57,7 +64,8 @@ glm::vec3 unit_light_direction(const RenderSettings& settings);
 const std::vector<std::string>& shading_names();
 const std::vector<std::string>& colormap_names();
 const std::vector<std::string>& hatching_names();
-const std::vector<std::string>& line_names();  // contours, suggestive, boundaries, creases, none
+// contours, suggestive, boundaries, creases, ridges, valleys, parabolic, mean-zero, none
+const std::vector<std::string>& line_names();
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<ColorMap> parse_colormap(const std::string& s);
 std::optional<Hatching> parse_hatching(const std::string& s);

@@ -79,8 +79,8 @@ TEST_CASE("The bunny and bunny-1M draw the same lines by default", "[render][det
     const render::Camera camera = default_camera(bunny);
     const float detail = render::RenderSettings{}.detail;
     const render::Image a = draw(bunny, camera, detail), b = draw(fine, camera, detail);
-    test::maybe_save(a, "detail-bunny.png");
-    test::maybe_save(b, "detail-bunny-1M.png");
+    test::maybe_save(a, "detail-bunny");
+    test::maybe_save(b, "detail-bunny-1M");
     const Agreement g = agreement(a, b);
     INFO("bunny ink within 2 px of bunny-1M's: " << g.a_in_b << ", the other way: " << g.b_in_a);
     CHECK(render::count_ink(a) > 3000);  // a drawing, not an outline alone
@@ -93,7 +93,7 @@ TEST_CASE("One smooth shape draws the same lines on any tessellation and with sc
     const render::Camera camera = default_camera(clean);
     const float detail = render::RenderSettings{}.detail;
     const render::Image reference = draw(clean, camera, detail);
-    test::maybe_save(reference, "detail-shape-1.3M.png");
+    test::maybe_save(reference, "detail-shape-1.3M");
 
     Mesh noisy = clean;
     add_normal_noise(noisy, 0.3f * mean_edge(clean), 7);
@@ -110,7 +110,7 @@ TEST_CASE("One smooth shape draws the same lines on any tessellation and with sc
     };
     for (const Case& c : cases) {
         const render::Image image = draw(c.mesh, camera, detail);
-        test::maybe_save(image, std::string("detail-shape-") + c.name + ".png");
+        test::maybe_save(image, std::string("detail-shape-") + c.name);
         const Agreement g = agreement(image, reference);
         INFO(c.name << ": ink within 2 px of the clean 1.3M drawing " << g.a_in_b << ", the other way " << g.b_in_a);
         CHECK(g.a_in_b > c.bound);

@@ -1,0 +1,115 @@
+// Ridges, valleys, parabolic and mean-zero lines (shaders/curvature_lines_geom.glsl)
+// where the mathematics puts them: a torus's parabolic lines are its top and
+// bottom circles (cos v = 0), its mean-zero lines the circles where
+// cos v = -R / 2r; an ellipsoid's ridges and valleys lie in its symmetry planes.
+#include "test_render_fixtures.h"
+
+#include "geometry/primitives.h"
+#include "geometry/surface_analysis.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace kappa;
+
+namespace {
+
+render::LineSelection only(bool render::LineSelection::*kind) {
+    render::LineSelection l{false, false, false, false, false, false, false, false};
+    l.*kind = true;
+    return l;
+}
+
+// Fraction of the ink within `r` px of the projected circle of radius rho at
+// height z around the z axis, and the ink count.
+std::pair<double, size_t> ink_near_circle(const render::Image& im, const render::Camera& camera,
+                                          const render::BoundingSphere& bounds, float rho, float z, float r) {
+    std::vector<glm::vec2> circle;
+    for (int i = 0; i < 720; ++i) {
+        const float a = 2.0f * float(M_PI) * float(i) / 720.0f;
+        circle.push_back(test::project(camera, bounds, {rho * std::cos(a), rho * std::sin(a), z}, im.width, im.height));
+    }
+    size_t ink = 0, near = 0;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            if (!test::is_ink(im.at(x, y))) continue;
+            ++ink;
+            for (const glm::vec2& c : circle)
+                if (glm::length(c - glm::vec2(x + 0.5f, y + 0.5f)) < r) {
+                    ++near;
+                    break;
+                }
+        }
+    return {ink ? double(near) / double(ink) : 0.0, ink};
+}
+
+}  // namespace
+
+TEST_CASE("A torus draws its parabolic lines on its top and bottom circles", "[render][curvature-lines]") {
+    const float R = 1.0f, r = 0.4f;
+    const Mesh torus = make_torus(R, r, 160, 64);
+    const SurfaceFields exact = test::torus_fields(torus, R, r);
+    const render::BoundingSphere bounds = render::bounding_sphere(torus);
+    // From above: the top circle (v = 90 degrees) is the circle of radius R at z = r.
+    const render::Camera camera = render::Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40);
+    const render::Image im = test::render(torus, exact, r, camera, test::lines_only(only(&render::LineSelection::parabolic)), 256, 256);
+    test::maybe_save(im, "parabolic-torus");
+    const auto [near, ink] = ink_near_circle(im, camera, bounds, R, r, 2.5f);
+    INFO("ink " << ink << ", near the top circle " << near);
+    CHECK(ink > 300);  // a circle of ~140 px radius, 2 px wide
+    CHECK(near > 0.97);
+}
+
+TEST_CASE("A torus draws its mean-zero lines where cos v = -R / 2r", "[render][curvature-lines]") {
+    const float R = 1.0f, r = 0.6f;
+    const Mesh torus = make_torus(R, r, 160, 64);
+    const SurfaceFields exact = test::torus_fields(torus, R, r);
+    const render::BoundingSphere bounds = render::bounding_sphere(torus);
+    const render::Camera camera = render::Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40);
+    const render::Image im = test::render(torus, exact, r, camera, test::lines_only(only(&render::LineSelection::mean_zero)), 256, 256);
+    test::maybe_save(im, "mean-zero-torus");
+    // H = 0: 1/r + cos v / (R + r cos v) = 0, cos v = -R / (2 r), on the inner side, top half seen.
+    const float cv = -R / (2 * r), sv = std::sqrt(1 - cv * cv);
+    const auto [near, ink] = ink_near_circle(im, camera, bounds, R + r * cv, r * sv, 2.5f);
+    INFO("ink " << ink << ", near the circle " << near);
+    CHECK(ink > 100);
+    CHECK(near > 0.97);
+}
+
+TEST_CASE("An ellipsoid's ridges and valleys lie in its symmetry planes", "[render][curvature-lines]") {
+    const Mesh ellipsoid = make_ellipsoid(1.6f, 1.0f, 0.6f, 5);
+    const SurfaceFields fields = compute_surface_fields(ellipsoid);
+    const render::BoundingSphere bounds = render::bounding_sphere(ellipsoid);
+    // Looking down z: the planes x = 0 and y = 0 appear as the two lines
+    // through the image centre, and the plane z = 0 meets the surface in the
+    // ellipse x^2/a^2 + y^2/b^2 = 1, the outline.
+    const render::Camera camera = render::Camera::look_at({0, 0, 6}, {0, 0, 0}, {0, 1, 0}, 40);
+    render::LineSelection l = only(&render::LineSelection::ridges);
+    l.valleys = true;
+    render::RenderSettings s = test::lines_only(l);
+    s.rv_threshold = 0.5f;
+    const render::Image im = test::render(ellipsoid, fields, 0.6f, camera, s, 256, 256);
+    test::maybe_save(im, "ridges-ellipsoid");
+    const glm::vec2 c = test::project(camera, bounds, {0, 0, 0}, 256, 256);
+    std::vector<glm::vec2> equator;
+    for (int i = 0; i < 720; ++i) {
+        const float t = 2.0f * float(M_PI) * float(i) / 720.0f;
+        equator.push_back(test::project(camera, bounds, {1.6f * std::cos(t), 1.0f * std::sin(t), 0.0f}, 256, 256));
+    }
+    size_t ink = 0, near = 0;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            if (!test::is_ink(im.at(x, y))) continue;
+            ++ink;
+            const glm::vec2 p(x + 0.5f, y + 0.5f);
+            bool on = std::fabs(p.x - c.x) < 3.0f || std::fabs(p.y - c.y) < 3.0f;
+            for (size_t i = 0; i < equator.size() && !on; ++i) on = glm::length(equator[i] - p) < 3.0f;
+            near += on;
+        }
+    INFO("ink " << ink << ", on the symmetry planes " << double(near) / double(std::max<size_t>(ink, 1)));
+    CHECK(ink > 100);
+    CHECK(double(near) > 0.9 * double(ink));
+}
