@@ -49,6 +49,20 @@ void lines_section(render::RenderSettings& s) {
     help_tooltip("lines");
     ImGui::Checkbox("creases", &s.lines.creases);
     help_tooltip("crease-angle");
+    ImGui::Checkbox("ridges", &s.lines.ridges);
+    help_tooltip("rv-threshold");
+    ImGui::SameLine();
+    ImGui::Checkbox("valleys", &s.lines.valleys);
+    help_tooltip("rv-threshold");
+    ImGui::Checkbox("parabolic (K = 0)", &s.lines.parabolic);
+    help_tooltip("lines");
+    ImGui::SameLine();
+    ImGui::Checkbox("H = 0", &s.lines.mean_zero);
+    help_tooltip("lines");
+    if (s.lines.ridges || s.lines.valleys) {
+        ImGui::SliderFloat("ridge threshold", &s.rv_threshold, 0.0f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+        help_tooltip("rv-threshold");
+    }
     ImGui::SliderFloat("threshold", &s.sc_threshold, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     help_tooltip("sc-threshold");
     bool detail_on = s.detail > 0;
