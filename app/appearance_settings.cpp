@@ -2,6 +2,7 @@
 
 #include "app/cli_options.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace kappa::app {
@@ -23,6 +24,16 @@ Set number(float lo, float hi, float RenderSettings::*field) {
         auto x = cli::parse_number(v);
         if (!x || *x < lo || *x > hi) return false;
         s.*field = float(*x);
+        return true;
+    };
+}
+
+// An integer in [lo, hi] into the field.
+Set integer(int lo, int hi, int RenderSettings::*field) {
+    return [=](RenderSettings& s, const std::string& v) {
+        auto x = cli::parse_number(v);
+        if (!x || *x != std::floor(*x) || *x < lo || *x > hi) return false;
+        s.*field = int(*x);
         return true;
     };
 }
@@ -53,7 +64,7 @@ const std::vector<AppearanceSetting>& appearance_settings() {
     static const std::vector<AppearanceSetting> table = {
         {"lines", "LIST",
          "lines to draw, comma list of: contours, suggestive, boundaries, creases, ridges, valleys, parabolic, "
-         "mean-zero, none (default contours,suggestive,creases)",
+         "mean-zero, isophotes, topo, none (default contours,suggestive,creases)",
          "a comma list of " + cli::join(render::line_names(), ", "), word(render::parse_lines, &R::lines)},
         {"detail", "PX|off",
          "scale of the surface the lines follow, in pixels on screen: shape features much smaller draw no lines "
@@ -70,6 +81,10 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"rv-threshold", "S",
          "ridges and valleys where the larger principal curvature |kmax| > S / fs, dimensionless (default 1.5)",
          range_text(0, 1e6f), number(0, 1e6f, &R::rv_threshold)},
+        {"isophotes", "N", "number of isophotes (lines of n.l = (k - 1/2) / N, the light as the shading's) (default 4)",
+         "an integer in [1, 16]", integer(1, 16, &R::isophote_count)},
+        {"topo", "N", "number of topographic lines (heights along y, evenly across the model) (default 12)",
+         "an integer in [1, 1000]", integer(1, 1000, &R::topo_count)},
         {"line-width", "PX", "line width in pixels (default 2)", range_text(0.1f, 64), number(0.1f, 64, &R::line_width)},
         {"fade", "on|off", "fade weak suggestive contours (default on)", "on or off", on_off(&R::fade)},
         {"shading", cli::join(render::shading_names(), "|"), "surface shading (default lambert)",

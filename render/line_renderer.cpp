@@ -25,6 +25,9 @@ LineRenderer::LineRenderer()
       curvature_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "curvature_lines_vert.glsl"}},
                         {GL_GEOMETRY_SHADER, {"line_quad.glsl", "curvature_lines_geom.glsl"}},
                         {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
+      level_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "level_lines_vert.glsl"}},
+                    {GL_GEOMETRY_SHADER, {"line_quad.glsl", "level_lines_geom.glsl"}},
+                    {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
       creases_({{GL_VERTEX_SHADER, {"crease_vert.glsl"}},
                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "crease_geom.glsl"}},
                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
@@ -103,6 +106,27 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         curvature_lines_.set("u_valleys", int(s.lines.valleys));
         curvature_lines_.set("u_rv_threshold", s.rv_threshold);
         curvature_lines_.set("u_feature_size", mesh.feature_size());
+        mesh.draw_triangles();
+    }
+    // Isophotes (n.l levels, the light as the shading's, in model coordinates)
+    // and topographic lines (height levels along y across the bounding sphere).
+    if (s.lines.isophotes && s.isophote_count > 0) {
+        set_common(level_lines_, mesh, frame, s);
+        level_lines_.set("u_kind", 0);
+        level_lines_.set("u_light_model", glm::normalize(glm::transpose(frame.normal_matrix) * unit_light_direction(s)));
+        const float step = 1.0f / float(s.isophote_count);
+        level_lines_.set("u_first", 0.5f * step);
+        level_lines_.set("u_step", step);
+        level_lines_.set("u_count", s.isophote_count);
+        mesh.draw_triangles();
+    }
+    if (s.lines.topo && s.topo_count > 0) {
+        set_common(level_lines_, mesh, frame, s);
+        level_lines_.set("u_kind", 1);
+        const float step = 2.0f * mesh.bounds().radius / float(s.topo_count);
+        level_lines_.set("u_first", mesh.bounds().center.y - mesh.bounds().radius + 0.5f * step);
+        level_lines_.set("u_step", step);
+        level_lines_.set("u_count", s.topo_count);
         mesh.draw_triangles();
     }
     if ((s.lines.creases || s.lines.contours) && mesh.crease_count() > 0) {

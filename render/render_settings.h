@@ -28,8 +28,10 @@ struct LineSelection {
     bool valleys = false;     // the same, < 0
     bool parabolic = false;   // K = 0
     bool mean_zero = false;   // H = 0
+    bool isophotes = false;   // levels of n.l (shaders/level_lines_geom.glsl)
+    bool topo = false;        // levels of the height along y
     bool curvature_lines() const { return ridges || valleys || parabolic || mean_zero; }
-    bool any() const { return contours || suggestive || boundaries || creases || curvature_lines(); }
+    bool any() const { return contours || suggestive || boundaries || creases || curvature_lines() || isophotes || topo; }
 };
 
 struct RenderSettings {
@@ -37,6 +39,8 @@ struct RenderSettings {
     float line_width = 2.0f;           // pixels, constant at any zoom
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
     float rv_threshold = 1.5f;         // dimensionless; ridges and valleys where |kmax| > S / fs
+    int isophote_count = 4;            // isophotes at n.l = (k - 1/2) / N, k = 1..N
+    int topo_count = 12;               // topographic lines: N heights evenly across the bounding sphere
     bool fade = true;                  // fade weak suggestive contours towards the threshold
     float detail = 12.0f;              // pixels: lines follow the surface at this scale (0 = off: the raw 1-ring fields)
     float crease_angle = -1.0f;        // degrees between faces that make a sharp edge; -1 auto, 0 off (geometry/creases.h)
@@ -64,7 +68,7 @@ glm::vec3 unit_light_direction(const RenderSettings& settings);
 const std::vector<std::string>& shading_names();
 const std::vector<std::string>& colormap_names();
 const std::vector<std::string>& hatching_names();
-// contours, suggestive, boundaries, creases, ridges, valleys, parabolic, mean-zero, none
+// contours, suggestive, boundaries, creases, ridges, valleys, parabolic, mean-zero, isophotes, topo, none
 const std::vector<std::string>& line_names();
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<ColorMap> parse_colormap(const std::string& s);

@@ -113,3 +113,74 @@ TEST_CASE("An ellipsoid's ridges and valleys lie in its symmetry planes", "[rend
     CHECK(ink > 100);
     CHECK(double(near) > 0.9 * double(ink));
 }
+
+namespace {
+
+// Fraction of the ink within r px of any of the given model-space curves.
+double ink_near_points(const render::Image& im, const std::vector<glm::vec2>& points, float r, size_t* ink_out) {
+    size_t ink = 0, near = 0;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            if (!test::is_ink(im.at(x, y))) continue;
+            ++ink;
+            for (const glm::vec2& c : points)
+                if (glm::length(c - glm::vec2(x + 0.5f, y + 0.5f)) < r) {
+                    ++near;
+                    break;
+                }
+        }
+    *ink_out = ink;
+    return ink ? double(near) / double(ink) : 0.0;
+}
+
+}  // namespace
+
+TEST_CASE("A sphere's isophotes are circles around the light direction, its topographic lines circles of latitude",
+          "[render][curvature-lines]") {
+    const float R = 1.0f;
+    const Mesh sphere = make_icosphere(R, 5);
+    const SurfaceFields exact = test::sphere_fields(sphere, R);
+    const render::BoundingSphere bounds = render::bounding_sphere(sphere);
+    // Camera on +z; the light towards the viewer: n.l = z / R in model coordinates.
+    const render::Camera camera = render::Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 30);
+    render::LineSelection l{false, false, false, false, false, false, false, false, true, false};
+    render::RenderSettings s = test::lines_only(l);
+    s.light_dir = {0, 0, 1};
+    s.isophote_count = 4;
+    const render::Image iso = test::render(sphere, exact, R, camera, s, 256, 256);
+    test::maybe_save(iso, "isophotes-sphere");
+    std::vector<glm::vec2> circles;
+    for (int k = 1; k <= 4; ++k) {
+        const float z = (float(k) - 0.5f) / 4.0f * R, rho = std::sqrt(R * R - z * z);
+        for (int i = 0; i < 360; ++i) {
+            const float a = 2.0f * float(M_PI) * float(i) / 360.0f;
+            circles.push_back(test::project(camera, bounds, {rho * std::cos(a), rho * std::sin(a), z}, 256, 256));
+        }
+    }
+    size_t ink = 0;
+    double near = ink_near_points(iso, circles, 2.5f, &ink);
+    INFO("isophotes: ink " << ink << ", near the four circles " << near);
+    CHECK(ink > 400);
+    CHECK(near > 0.97);
+
+    // Topographic lines: heights y = -R + (k - 1/2) 2R / N, seen from +z.
+    l.isophotes = false;
+    l.topo = true;
+    s = test::lines_only(l);
+    s.topo_count = 6;
+    const render::Image topo = test::render(sphere, exact, R, camera, s, 256, 256);
+    test::maybe_save(topo, "topo-sphere");
+    std::vector<glm::vec2> latitudes;
+    for (int k = 1; k <= 6; ++k) {
+        const float y = -bounds.radius + (float(k) - 0.5f) * 2.0f * bounds.radius / 6.0f + bounds.center.y;
+        const float rho = std::sqrt(std::max(0.0f, R * R - y * y));
+        for (int i = 0; i < 360; ++i) {
+            const float a = 2.0f * float(M_PI) * float(i) / 360.0f;
+            latitudes.push_back(test::project(camera, bounds, {rho * std::cos(a), y, rho * std::sin(a)}, 256, 256));
+        }
+    }
+    near = ink_near_points(topo, latitudes, 2.5f, &ink);
+    INFO("topo: ink " << ink << ", near the six latitudes " << near);
+    CHECK(ink > 300);
+    CHECK(near > 0.97);
+}
