@@ -45,6 +45,7 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
     p.set("u_line_width", s.line_width);
     p.set("u_depth", 0);
     p.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
+    p.set("u_hidden_lines", int(s.hidden_lines));
 }
 
 // Hatching strokes grow from surface samples (shaders/hatch_vert.glsl). The

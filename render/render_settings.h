@@ -37,6 +37,7 @@ struct LineSelection {
 struct RenderSettings {
     LineSelection lines;
     float line_width = 2.0f;           // pixels, constant at any zoom
+    bool hidden_lines = false;         // also draw the hidden parts of the lines, dashed and light
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
     float rv_threshold = 1.5f;         // dimensionless; ridges and valleys where |kmax| > S / fs
     int isophote_count = 4;            // isophotes at n.l = (k - 1/2) / N, k = 1..N

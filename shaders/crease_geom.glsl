@@ -15,11 +15,12 @@ in CreaseVertex {
 
 uniform int u_creases;
 uniform int u_contours;
+uniform int u_hidden_lines;  // every crease is then drawn: the fragment stage dashes the hidden ones
 
 void main() {
     bool front_a = v_in[0].facing_a > 0.0 || v_in[1].facing_a > 0.0;
     bool front_b = v_in[0].facing_b > 0.0 || v_in[1].facing_b > 0.0;
-    bool visible = front_a || front_b;
+    bool visible = front_a || front_b || u_hidden_lines != 0;
     bool silhouette = front_a != front_b;
     if (!((u_creases != 0 && visible) || (u_contours != 0 && silhouette))) return;
     float tolerance = 0.5 * distance(v_in[0].position, v_in[1].position);

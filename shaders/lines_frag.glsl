@@ -13,6 +13,7 @@ in LineFragment {
 
 uniform sampler2D u_depth;    // surface depth (window depth, single-sampled)
 uniform vec2 u_depth_params;  // (P[2][2], P[3][2]) of the projection: window depth -> camera distance
+uniform int u_hidden_lines;   // 1: hidden parts are drawn dashed and light instead of not at all
 
 out float o_coverage;
 
@@ -42,12 +43,18 @@ void main() {
     ivec2 qi = clamp(ivec2(floor(q)), ivec2(0), size - 1);
     float line_distance = camera_distance(mix(f_in.depth.x, f_in.depth.y, t));
     float centre = texelFetch(u_depth, qi, 0).r;
+    float shade = 1.0;
     if (centre < 1.0 && line_distance > camera_distance(centre) + f_in.tolerance) {
         float farthest = centre;
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx)
                 farthest = max(farthest, texelFetch(u_depth, clamp(qi + ivec2(dx, dy), ivec2(0), size - 1), 0).r);
-        if (farthest < 1.0 && line_distance > camera_distance(farthest) + f_in.tolerance) discard;
+        if (farthest < 1.0 && line_distance > camera_distance(farthest) + f_in.tolerance) {
+            // Hidden: not drawn, or (--hidden-lines on) dashes of 6 px every 10 px at 35% ink,
+            // the dashes measured along the segment from its first end.
+            if (u_hidden_lines == 0 || f_in.on_surface > 0.0 || mod(t * sqrt(len2), 10.0) > 6.0) discard;
+            shade = 0.35;
+        }
     }
-    o_coverage = coverage * mix(f_in.alpha.x, f_in.alpha.y, t);
+    o_coverage = shade * coverage * mix(f_in.alpha.x, f_in.alpha.y, t);
 }

@@ -390,3 +390,52 @@ TEST_CASE("A turntable turns around the model's vertical axis: a cube looks the 
         CHECK(differ < 30);  // rounding along the edges only
     }
 }
+
+TEST_CASE("Hidden lines on: a cube draws its hidden edges dashed and light and its visible ones as before",
+          "[render][cli][creases]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/cube.obj", cube_obj());
+    const auto r = test::run_command(kappa_render(dir + "/cube.obj -o " + dir + "/h.png --size 400x300 "
+                                                  "--shading none --msaa off --view 30,20 --hidden-lines on"));
+    REQUIRE(r.exit_code == 0);
+    const render::Image im = render::read_png(dir + "/h.png");
+    Mesh cube;
+    for (int i = 0; i < 8; ++i) cube.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
+    const render::BoundingSphere bounds = render::bounding_sphere(cube);
+    const render::Camera camera = render::Camera::framing(bounds, 30.0f, 400.0f / 300.0f, view_direction({30, 20}));
+    const glm::vec3 eye = camera.eye();
+    // The darkest value within 1 px of a point.
+    auto darkest = [&](glm::vec2 p) {
+        int v = 255;
+        for (int y = int(p.y) - 1; y <= int(p.y) + 1; ++y)
+            for (int x = int(p.x) - 1; x <= int(p.x) + 1; ++x)
+                if (x >= 0 && y >= 0 && x < im.width && y < im.height) v = std::min(v, int(im.at(x, y).r));
+        return v;
+    };
+    for (int a = 0; a < 8; ++a)
+        for (int bit : {1, 2, 4}) {
+            const int b = a | bit;
+            if (b == a) continue;
+            bool visible = false;
+            for (int other : {1, 2, 4}) {
+                if (other == bit) continue;
+                glm::vec3 n(0.0f);
+                n[other == 1 ? 0 : other == 2 ? 1 : 2] = (a & other) ? 1.0f : -1.0f;
+                visible |= glm::dot(n, eye - cube.positions[size_t(a)]) > 0;
+            }
+            int black = 0, grey = 0, white = 0;
+            for (float t = 0.15f; t < 0.86f; t += 0.01f) {
+                const int v = darkest(test::project(camera, bounds, glm::mix(cube.positions[size_t(a)],
+                                                                              cube.positions[size_t(b)], t), 400, 300));
+                (v < 100 ? black : v < 230 ? grey : white)++;
+            }
+            INFO("edge " << a << "-" << b << ": black " << black << ", grey " << grey << ", white " << white);
+            if (visible) {
+                CHECK(white == 0);
+                CHECK(black > grey);
+            } else {  // dashed: light ink with gaps, never full black away from the visible edges
+                CHECK(grey > 10);
+                CHECK(white > 5);
+            }
+        }
+}
