@@ -89,7 +89,9 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"fade", "on|off", "fade weak suggestive contours (default on)", "on or off", on_off(&R::fade)},
         {"hidden-lines", "on|off", "also draw the hidden parts of the chosen lines, dashed and light (default off)",
          "on or off", on_off(&R::hidden_lines)},
-        {"shading", cli::join(render::shading_names(), "|"), "surface shading (default lambert)",
+        {"shading", cli::join(render::shading_names(), "|"),
+         "surface shading: none (white paper), lambert, toon (three greys), hemisphere, toon-bw (two tones), gooch "
+         "(cool to warm) (default lambert)",
          one_of(render::shading_names()), word(render::parse_shading, &R::shading)},
         {"light", "X,Y,Z",
          "direction towards the light in camera coordinates (x right, y up, z towards the viewer; "

@@ -27,7 +27,7 @@ glm::vec3 unit_light_direction(const RenderSettings& settings) {
 }
 
 const std::vector<std::string>& shading_names() {
-    static const std::vector<std::string> n{"none", "lambert", "toon"};
+    static const std::vector<std::string> n{"none", "lambert", "toon", "hemisphere", "toon-bw", "gooch"};
     return n;
 }
 const std::vector<std::string>& colormap_names() {

@@ -14,7 +14,7 @@
 
 namespace kappa::render {
 
-enum class Shading { None, Lambert, Toon };
+enum class Shading { None, Lambert, Toon, Hemisphere, ToonBW, Gooch };
 enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
 enum class Hatching { None, Min, Max, Cross };
 

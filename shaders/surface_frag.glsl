@@ -1,10 +1,11 @@
-// Surface pass, fragment stage: paper, Lambertian or toon shading and a
-// curvature colour map (hatching strokes are drawn by the line passes).
-// Output is premultiplied RGBA (opaque).
+// Surface pass, fragment stage: paper, Lambertian, toon (grey and white, or
+// black and white), hemisphere or Gooch (cool to warm, Gooch et al. 1998)
+// shading and a curvature colour map (hatching strokes are drawn by the
+// line passes). Output is premultiplied RGBA (opaque).
 in vec3 v_normal;
 in vec2 v_map_value;
 
-uniform int u_shading;      // 0 none (white paper), 1 Lambert, 2 toon
+uniform int u_shading;      // 0 none (white paper), 1 Lambert, 2 toon, 3 hemisphere, 4 toon-bw, 5 Gooch
 uniform vec3 u_light;       // unit, towards the light, camera coordinates
 uniform int u_colormap;     // 0 none, else colormap.glsl ids
 uniform float u_map_range;
@@ -18,7 +19,16 @@ void main() {
     float light = 1.0;
     if (u_shading == 1) light = 0.25 + 0.75 * diffuse;
     if (u_shading == 2) light = diffuse > 0.6 ? 1.0 : (diffuse > 0.25 ? 0.75 : 0.5);
+    if (u_shading == 3) light = 0.35 + 0.65 * (0.5 + 0.5 * dot(n, u_light));  // lit from the whole sky around the light
+    if (u_shading == 4) light = diffuse > 0.35 ? 1.0 : 0.3;                 // two tones: lines stay readable
 
     vec3 albedo = u_colormap != 0 ? colormap_color(u_colormap, v_map_value, u_map_range) : vec3(1.0);
+    if (u_shading == 5) {
+        // Gooch: from cool blue facing away from the light to warm yellow facing it.
+        float k = 0.5 + 0.5 * dot(n, u_light);
+        vec3 cool = vec3(0.25, 0.3, 0.75) + 0.25 * albedo, warm = vec3(0.85, 0.75, 0.25) + 0.25 * albedo;
+        o_color = vec4(min(mix(cool, warm, k), vec3(1.0)), 1.0);
+        return;
+    }
     o_color = vec4(albedo * light, 1.0);
 }

@@ -7,6 +7,8 @@
 #include "geometry/primitives.h"
 
 #include <algorithm>
+#include <cmath>
+#include <set>
 
 using namespace kappa;
 
@@ -134,4 +136,42 @@ TEST_CASE("colour maps on a torus", "[render][colormap]") {
         check_pixel(image, {x, 128 - 60}, Hue::Red, "top of the bar (high values)");
         check_pixel(image, {x, 128 + 60}, Hue::Blue, "bottom of the bar (low values)");
     }
+}
+
+TEST_CASE("Shadings hemisphere, toon-bw and gooch: lit towards the light, as their names say", "[render][shading]") {
+    // A unit sphere seen from +z with the light towards the viewer: n.l = 1 at
+    // the centre of the picture and 0 at the outline.
+    const Mesh sphere = make_icosphere(1.0f, 5);
+    const SurfaceFields exact = test::sphere_fields(sphere, 1.0f);
+    const render::Camera camera = render::Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 30);
+    const render::BoundingSphere bounds = render::bounding_sphere(sphere);
+    auto shaded = [&](render::Shading shading, glm::vec3 light = {0, 0, 1}) {
+        render::RenderSettings s = test::lines_only(render::LineSelection{false, false, false, false});
+        s.shading = shading;
+        s.light_dir = light;
+        return test::render(sphere, exact, 1.0f, camera, s, 128, 128);
+    };
+    // Points at n.l = 1 (centre), 0.7 and about 0.15 (near the outline).
+    auto at = [&](const render::Image& im, float nl) {
+        const glm::vec2 p = test::project(camera, bounds, {std::sqrt(1 - nl * nl), 0, nl}, 128, 128);
+        return im.at(int(p.x), int(p.y));
+    };
+    const render::Image hemi = shaded(render::Shading::Hemisphere);
+    CHECK(at(hemi, 1.0f).r > at(hemi, 0.7f).r);
+    CHECK(at(hemi, 0.7f).r > at(hemi, 0.15f).r);
+    CHECK(at(hemi, 0.15f).r > 80);  // the sky lights the far side too
+    const render::Image bw = shaded(render::Shading::ToonBW);
+    CHECK(at(bw, 1.0f).r == 255);
+    CHECK(at(bw, 0.15f).r < 100);
+    std::set<int> tones;
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 128; ++x) tones.insert(bw.at(x, y).r);
+    CHECK(tones.size() <= 3);  // two tones (and the white paper, the same as the lit tone)
+    // Gooch, lit from the right (+x): warm on the right, cool on the left.
+    const render::Image gooch = shaded(render::Shading::Gooch, {1, 0, 0});
+    const glm::vec2 right = test::project(camera, bounds, {0.9f, 0, 0.43f}, 128, 128);
+    const glm::vec2 left = test::project(camera, bounds, {-0.9f, 0, 0.43f}, 128, 128);
+    const render::Rgba warm = gooch.at(int(right.x), int(right.y)), cool = gooch.at(int(left.x), int(left.y));
+    CHECK(warm.r > warm.b);
+    CHECK(cool.b > cool.r);
 }
