@@ -208,7 +208,7 @@ TEST_CASE("script errors name the file and line and the viewer exits 1", "[viewe
     test::write_file(dir + "/bad2.txt", "set shading glossy\n");
     const auto r2 = test::run_command(std::string(KAPPA_EXE) + " view --script " + dir + "/bad2.txt");
     CHECK(r2.exit_code == 1);
-    CHECK(r2.output.find("bad2.txt:1: --shading expects one of none, lambert, toon, got 'glossy'") !=
+    CHECK(r2.output.find("bad2.txt:1: --shading expects one of none, lambert, toon, hemisphere, toon-bw, gooch, got 'glossy'") !=
           std::string::npos);
 }
 
