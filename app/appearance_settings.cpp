@@ -64,7 +64,8 @@ const std::vector<AppearanceSetting>& appearance_settings() {
     static const std::vector<AppearanceSetting> table = {
         {"lines", "LIST",
          "lines to draw, comma list of: contours, suggestive, boundaries, creases, ridges, valleys, parabolic, "
-         "mean-zero, isophotes, topo, none (default contours,suggestive,creases)",
+         "mean-zero, isophotes, topo, silhouette (exterior contours only), none (default "
+         "contours,suggestive,creases)",
          "a comma list of " + cli::join(render::line_names(), ", "), word(render::parse_lines, &R::lines)},
         {"detail", "PX|off",
          "scale of the surface the lines follow, in pixels on screen: shape features much smaller draw no lines "

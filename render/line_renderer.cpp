@@ -83,16 +83,18 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
 
     // Contours and suggestive contours: one pass over the triangles.
-    if (s.lines.contours || s.lines.suggestive) {
+    const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
+    if (contours || s.lines.suggestive) {
         set_common(isolines_, mesh, frame, s);
-        isolines_.set("u_contours", int(s.lines.contours));
+        isolines_.set("u_contours", int(contours));
+        isolines_.set("u_silhouette_only", int(silhouette_only));
         isolines_.set("u_suggestive", int(s.lines.suggestive));
         isolines_.set("u_sc_threshold", s.sc_threshold);
         isolines_.set("u_fade", int(s.fade));
         // One pixel spans 2 w / (P[1][1] height) model units at camera distance w.
         isolines_.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
         if (s.cull_clusters)
-            mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, s.lines.contours, s.lines.suggestive,
+            mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive,
                                                   s.sc_threshold, 0.5f * s.line_width + 2.0f));
         else
             mesh.draw_triangles();
@@ -130,10 +132,11 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_count", s.topo_count);
         mesh.draw_triangles();
     }
-    if ((s.lines.creases || s.lines.contours) && mesh.crease_count() > 0) {
+    if ((s.lines.creases || contours) && mesh.crease_count() > 0) {
         set_common(creases_, mesh, frame, s);
         creases_.set("u_creases", int(s.lines.creases));
-        creases_.set("u_contours", int(s.lines.contours));
+        creases_.set("u_contours", int(contours));
+        creases_.set("u_silhouette_only", int(silhouette_only));
         mesh.draw_creases();
     }
     if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {

@@ -41,7 +41,7 @@ const std::vector<std::string>& hatching_names() {
 const std::vector<std::string>& line_names() {
     static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "creases", "ridges",
                                             "valleys",  "parabolic",  "mean-zero",  "isophotes",
-                                            "topo",     "none"};
+                                            "topo",     "silhouette", "none"};
     return n;
 }
 
@@ -50,7 +50,7 @@ std::optional<ColorMap> parse_colormap(const std::string& s) { return lookup<Col
 std::optional<Hatching> parse_hatching(const std::string& s) { return lookup<Hatching>(hatching_names(), s); }
 
 std::optional<LineSelection> parse_lines(const std::string& list) {
-    LineSelection l{false, false, false, false, false, false, false, false, false, false};
+    LineSelection l{false, false, false, false, false, false, false, false, false, false, false};
     std::vector<std::string> seen;
     size_t start = 0;
     for (;;) {
@@ -68,6 +68,7 @@ std::optional<LineSelection> parse_lines(const std::string& list) {
         else if (word == "mean-zero") l.mean_zero = true;
         else if (word == "isophotes") l.isophotes = true;
         else if (word == "topo") l.topo = true;
+        else if (word == "silhouette") l.silhouette = true;
         else if (word != "none") return std::nullopt;
         if (comma == std::string::npos) break;
         start = comma + 1;
@@ -132,6 +133,7 @@ std::string to_string(const LineSelection& l) {
     if (l.mean_zero) s += std::string(s.empty() ? "" : ",") + "mean-zero";
     if (l.isophotes) s += std::string(s.empty() ? "" : ",") + "isophotes";
     if (l.topo) s += std::string(s.empty() ? "" : ",") + "topo";
+    if (l.silhouette) s += std::string(s.empty() ? "" : ",") + "silhouette";
     return s.empty() ? "none" : s;
 }
 

@@ -30,8 +30,13 @@ struct LineSelection {
     bool mean_zero = false;   // H = 0
     bool isophotes = false;   // levels of n.l (shaders/level_lines_geom.glsl)
     bool topo = false;        // levels of the height along y
+    bool silhouette = false;  // the exterior silhouette only: contours that border the background
     bool curvature_lines() const { return ridges || valleys || parabolic || mean_zero; }
-    bool any() const { return contours || suggestive || boundaries || creases || curvature_lines() || isophotes || topo; }
+    bool any() const {
+        return contours || suggestive || boundaries || creases || curvature_lines() || isophotes || topo || silhouette;
+    }
+    // Contours are extracted for either; with silhouette alone only the exterior ones are kept.
+    bool any_contours() const { return contours || silhouette; }
 };
 
 struct RenderSettings {
@@ -69,7 +74,8 @@ glm::vec3 unit_light_direction(const RenderSettings& settings);
 const std::vector<std::string>& shading_names();
 const std::vector<std::string>& colormap_names();
 const std::vector<std::string>& hatching_names();
-// contours, suggestive, boundaries, creases, ridges, valleys, parabolic, mean-zero, isophotes, topo, none
+// contours, suggestive, boundaries, creases, ridges, valleys, parabolic, mean-zero, isophotes, topo,
+// silhouette, none
 const std::vector<std::string>& line_names();
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<ColorMap> parse_colormap(const std::string& s);

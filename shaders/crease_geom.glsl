@@ -16,6 +16,7 @@ in CreaseVertex {
 uniform int u_creases;
 uniform int u_contours;
 uniform int u_hidden_lines;  // every crease is then drawn: the fragment stage dashes the hidden ones
+uniform int u_silhouette_only;  // contours only where they border the background
 
 void main() {
     bool front_a = v_in[0].facing_a > 0.0 || v_in[1].facing_a > 0.0;
@@ -24,5 +25,7 @@ void main() {
     bool silhouette = front_a != front_b;
     if (!((u_creases != 0 && visible) || (u_contours != 0 && silhouette))) return;
     float tolerance = 0.5 * distance(v_in[0].position, v_in[1].position);
+    // A silhouette crease drawn as contour only: exterior only when asked.
+    exterior_only_ = !(u_creases != 0 && visible) && u_silhouette_only != 0 ? 1.0 : 0.0;
     emit_segment(gl_in[0].gl_Position, gl_in[1].gl_Position, 1.0, 1.0, tolerance);
 }

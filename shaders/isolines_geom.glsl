@@ -18,6 +18,7 @@ in LineVertex {
 } v_in[];
 
 uniform int u_contours;
+uniform int u_silhouette_only;  // contours only where they border the background
 uniform int u_suggestive;
 uniform float u_sc_threshold;  // dimensionless s
 uniform int u_fade;            // fade suggestive contours whose strength is close to s
@@ -74,7 +75,9 @@ void contour_segment() {
     float f[3] = float[3](v_in[0].contour_ndotv, v_in[1].contour_ndotv, v_in[2].contour_ndotv);
     Crossing c0, c1;
     if (!find_crossings(f, c0, c1)) return;
+    exterior_only_ = float(u_silhouette_only);
     emit_segment(clip_at(c0), clip_at(c1), 1.0, 1.0, triangle_tolerance());
+    exterior_only_ = 0.0;
 }
 
 // Clips the segment [0, 1] to where the linear function g (g0 at 0, g1 at 1)

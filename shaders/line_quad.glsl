@@ -21,6 +21,7 @@ out LineFragment {
     flat float tolerance;  // occlusion tolerance, camera units
     flat float width;      // pixels
     flat float on_surface; // 1: drawn only over the surface (hatching strokes never overhang the silhouette)
+    flat float exterior_only; // 1: drawn only where one side is background (the exterior silhouette)
 } g_out;
 
 vec3 to_window(vec4 clip) {
@@ -30,6 +31,7 @@ vec3 to_window(vec4 clip) {
 
 // Outputs are undefined after EmitVertex: every corner writes them again.
 vec4 segment_; vec2 depth_, alpha_; float tolerance_, width_, on_surface_;
+float exterior_only_ = 0.0;  // set by a geometry shader before emitting exterior-silhouette segments
 
 void emit_corner(vec2 window_xy, float window_z) {
     g_out.segment = segment_;
@@ -38,6 +40,7 @@ void emit_corner(vec2 window_xy, float window_z) {
     g_out.tolerance = tolerance_;
     g_out.width = width_;
     g_out.on_surface = on_surface_;
+    g_out.exterior_only = exterior_only_;
     gl_Position = vec4(window_xy / u_viewport * 2.0 - 1.0, window_z * 2.0 - 1.0, 1.0);
     EmitVertex();
 }

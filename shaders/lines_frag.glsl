@@ -9,6 +9,7 @@ in LineFragment {
     flat float tolerance;
     flat float width;
     flat float on_surface;
+    flat float exterior_only;
 } f_in;
 
 uniform sampler2D u_depth;    // surface depth (window depth, single-sampled)
@@ -40,6 +41,15 @@ void main() {
     // nearer, so a line visible against it is visible against the maximum.
     if (f_in.on_surface > 0.0 && texelFetch(u_depth, ivec2(p), 0).r == 1.0) discard;
     ivec2 size = textureSize(u_depth, 0);
+    if (f_in.exterior_only > 0.0) {
+        // The exterior silhouette: background on one side of the line, a line-width and
+        // two pixels away from its centre.
+        vec2 side = len2 > 1e-12 ? normalize(vec2(-ab.y, ab.x)) : vec2(1.0, 0.0);
+        float reach = 0.5 * f_in.width + 2.0;
+        ivec2 a_side = clamp(ivec2(floor(q + side * reach)), ivec2(0), size - 1);
+        ivec2 b_side = clamp(ivec2(floor(q - side * reach)), ivec2(0), size - 1);
+        if (texelFetch(u_depth, a_side, 0).r < 1.0 && texelFetch(u_depth, b_side, 0).r < 1.0) discard;
+    }
     ivec2 qi = clamp(ivec2(floor(q)), ivec2(0), size - 1);
     float line_distance = camera_distance(mix(f_in.depth.x, f_in.depth.y, t));
     float centre = texelFetch(u_depth, qi, 0).r;

@@ -304,14 +304,15 @@ std::string cylinder_obj(int n) {
 // with ink within 2 px in the line drawing of the same view.
 double outline_inked(const std::string& mesh, const std::string& dir, const std::string& view) {
     const std::string common = " -q --size 400x300 --msaa off " + view + " -o " + dir;
-    const auto a = test::run_command(kappa_render(mesh + " --lines none --background white" + common + "/mask.png"));
+    // The mask: the shaded model on a magenta background (lit surface can be white).
+    const auto a = test::run_command(kappa_render(mesh + " --lines none --background '#ff00ff'" + common + "/mask.png"));
     const auto b = test::run_command(kappa_render(mesh + " --shading none" + common + "/lines.png"));
     if (a.exit_code != 0 || b.exit_code != 0) return -1;
     const render::Image mask = render::read_png(dir + "/mask.png"), lines = render::read_png(dir + "/lines.png");
     auto object = [&](int x, int y) {
         if (x < 0 || y < 0 || x >= mask.width || y >= mask.height) return false;
         const render::Rgba c = mask.at(x, y);
-        return c.r < 250 || c.g < 250 || c.b < 250;  // shaded surface, not white paper
+        return !(c.r == 255 && c.g == 0 && c.b == 255);  // not the magenta background
     };
     size_t outline = 0, inked = 0;
     for (int y = 0; y < mask.height; ++y)
@@ -438,4 +439,44 @@ TEST_CASE("Hidden lines on: a cube draws its hidden edges dashed and light and i
                 CHECK(white > 5);
             }
         }
+}
+
+TEST_CASE("Lines silhouette: the whole exterior outline and no interior contour", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    const std::string bunny = test::shared_mesh("bunny.ply");
+    const std::string common = " -q --size 400x300 --msaa off --shading none -o " + dir;
+    REQUIRE(test::run_command(kappa_render(bunny + " --lines none --background '#ff00ff' -q --size 400x300 --msaa off -o " +
+                                           dir + "/mask.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(bunny + " --lines silhouette" + common + "/sil.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(bunny + " --lines contours" + common + "/con.png")).exit_code == 0);
+    const render::Image mask = render::read_png(dir + "/mask.png"), sil = render::read_png(dir + "/sil.png"),
+                        con = render::read_png(dir + "/con.png");
+    auto object = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= mask.width || y >= mask.height) return false;
+        const render::Rgba c = mask.at(x, y);
+        return !(c.r == 255 && c.g == 0 && c.b == 255);  // not the magenta background
+    };
+    auto near_background = [&](int x, int y, int r) {
+        for (int dy = -r; dy <= r; ++dy)
+            for (int dx = -r; dx <= r; ++dx)
+                if (!object(x + dx, y + dy)) return true;
+        return false;
+    };
+    size_t outline = 0, outline_inked = 0, ink = 0, ink_off_outline = 0;
+    for (int y = 0; y < mask.height; ++y)
+        for (int x = 0; x < mask.width; ++x) {
+            if (test::is_ink(sil.at(x, y))) {
+                ++ink;
+                ink_off_outline += !near_background(x, y, 4);
+            }
+            if (object(x, y) && near_background(x, y, 1)) {
+                ++outline;
+                outline_inked += ink_within(sil, {x + 0.5f, y + 0.5f}, 2.0f);
+            }
+        }
+    INFO("outline " << outline << " px, inked " << outline_inked << "; silhouette ink " << ink << ", away from the "
+                    "background " << ink_off_outline << "; contour ink " << test::count_ink(con));
+    CHECK(double(outline_inked) > 0.98 * double(outline));  // measured 99.2%
+    CHECK(ink_off_outline < ink / 100);
+    CHECK(test::count_ink(con) > ink + 200);  // the interior contours (ears, legs) left out
 }
