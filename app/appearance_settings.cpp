@@ -103,6 +103,15 @@ const std::vector<AppearanceSetting>& appearance_settings() {
              if (d) s.light_dir = *d;
              return bool(d);
          }},
+        {"light-frame", "camera|model",
+         "what --light is fixed to: the camera (the light moves with the view) or the model (it turns with the "
+         "model) (default camera)",
+         "camera or model",
+         [](R& s, const std::string& v) {
+             if (v != "camera" && v != "model") return false;
+             s.light_on_model = v == "model";
+             return true;
+         }},
         {"colormap", cli::join(render::colormap_names(), "|"), "curvature colour map (default none)",
          one_of(render::colormap_names()), word(render::parse_colormap, &R::colormap)},
         {"colorbar", "on|off", "draw the colour map's legend, with its values, at the right edge", "on or off",

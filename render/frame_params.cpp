@@ -1,5 +1,9 @@
 #include "render/frame_params.h"
 
+#include "render/render_settings.h"
+
+#include <glm/geometric.hpp>
+
 #include <glm/matrix.hpp>
 
 namespace kappa::render {
@@ -14,6 +18,14 @@ FrameParams FrameParams::make(const Camera& camera, const BoundingSphere& bounds
     f.eye = camera.eye();
     f.viewport = glm::vec2(float(width), float(height));
     return f;
+}
+
+glm::vec3 camera_light_direction(const RenderSettings& settings, const FrameParams& frame) {
+    const glm::vec3 l = unit_light_direction(settings);
+    if (!settings.light_on_model) return l;
+    const glm::vec3 c = frame.normal_matrix * l;
+    const float len = glm::length(c);
+    return len > 0 ? c / len : glm::vec3(0, 0, 1);
 }
 
 }  // namespace kappa::render

@@ -63,7 +63,7 @@ void LineRenderer::draw_hatching(const MeshBuffers& mesh, const FrameParams& fra
 
     set_common(hatching_, mesh, frame, s);
     hatching_.set("u_normal_matrix", frame.normal_matrix);
-    hatching_.set("u_light", unit_light_direction(s));
+    hatching_.set("u_light", camera_light_direction(s, frame));
     hatching_.set("u_pixels_per_unit", float(pixels_per_unit));
     hatching_.set("u_strokes_per_area", float(strokes_per_area));
     hatching_.set("u_stroke_length", s.hatch_stroke_length);
@@ -116,7 +116,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     if (s.lines.isophotes && s.isophote_count > 0) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 0);
-        level_lines_.set("u_light_model", glm::normalize(glm::transpose(frame.normal_matrix) * unit_light_direction(s)));
+        level_lines_.set("u_light_model", glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame)));
         const float step = 1.0f / float(s.isophote_count);
         level_lines_.set("u_first", 0.5f * step);
         level_lines_.set("u_step", step);

@@ -54,6 +54,7 @@ struct RenderSettings {
 
     Shading shading = Shading::Lambert;
     glm::vec3 light_dir{-0.35f, 0.45f, 1.0f};  // towards the light, camera coordinates (x right, y up, z to the viewer)
+    bool light_on_model = false;       // light_dir is in model coordinates instead: the light turns with the model
     ColorMap colormap = ColorMap::None;
     bool colorbar = false;             // legend of the colour map in the image
     Hatching hatching = Hatching::None;

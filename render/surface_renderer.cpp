@@ -13,7 +13,7 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     program_.set("u_model_view", frame.model_view);
     program_.set("u_normal_matrix", frame.normal_matrix);
     program_.set("u_shading", int(s.shading));
-    program_.set("u_light", unit_light_direction(s));
+    program_.set("u_light", camera_light_direction(s, frame));
     program_.set("u_colormap", int(s.colormap));
     program_.set("u_map_range", mesh.map_range(s.colormap));
     glEnable(GL_DEPTH_TEST);

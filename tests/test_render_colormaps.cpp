@@ -175,3 +175,24 @@ TEST_CASE("Shadings hemisphere, toon-bw and gooch: lit towards the light, as the
     CHECK(warm.r > warm.b);
     CHECK(cool.b > cool.r);
 }
+
+TEST_CASE("The light is fixed to the camera by default, to the model with light_on_model", "[render][shading]") {
+    const Mesh sphere = make_icosphere(1.0f, 5);
+    const SurfaceFields exact = test::sphere_fields(sphere, 1.0f);
+    // The camera on +x looking at the sphere; the light along +x.
+    const render::Camera camera = render::Camera::look_at({5, 0, 0}, {0, 0, 0}, {0, 1, 0}, 30);
+    const render::BoundingSphere bounds = render::bounding_sphere(sphere);
+    render::RenderSettings s = test::lines_only(render::LineSelection{false, false, false, false});
+    s.shading = render::Shading::Lambert;
+    s.light_dir = {1, 0, 0};
+    const glm::vec2 centre = test::project(camera, bounds, {1, 0, 0}, 128, 128);              // n = +x
+    const glm::vec2 right = test::project(camera, bounds, {0.2f, 0, -0.98f}, 128, 128);       // n about -z: image right
+    // Camera frame: +x is the image's right: the right side is lit, the centre half.
+    const render::Image cam = test::render(sphere, exact, 1.0f, camera, s, 128, 128);
+    CHECK(cam.at(int(right.x), int(right.y)).r > cam.at(int(centre.x), int(centre.y)).r);
+    // Model frame: +x of the model points at the camera: the centre is lit most.
+    s.light_on_model = true;
+    const render::Image model = test::render(sphere, exact, 1.0f, camera, s, 128, 128);
+    CHECK(model.at(int(centre.x), int(centre.y)).r == 255);
+    CHECK(model.at(int(centre.x), int(centre.y)).r > model.at(int(right.x), int(right.y)).r);
+}
