@@ -88,6 +88,12 @@ const std::vector<AppearanceSetting>& appearance_settings() {
          "an integer in [1, 1000]", integer(1, 1000, &R::topo_count)},
         {"line-width", "PX", "line width in pixels (default 2)", range_text(0.1f, 64), number(0.1f, 64, &R::line_width)},
         {"fade", "on|off", "fade weak suggestive contours (default on)", "on or off", on_off(&R::fade)},
+        {"vectors", "LIST",
+         "direction glyphs (at about one vertex per 600 pixels of the image), comma list of: normal, principal1, "
+         "principal2, asymptotic, view, "
+         "none (default none)",
+         "a comma list of " + cli::join(render::vector_names(), ", ") + ", or none",
+         word(render::parse_vectors, &R::vectors)},
         {"hidden-lines", "on|off", "also draw the hidden parts of the chosen lines, dashed and light (default off)",
          "on or off", on_off(&R::hidden_lines)},
         {"shading", cli::join(render::shading_names(), "|"),

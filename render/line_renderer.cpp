@@ -28,6 +28,9 @@ LineRenderer::LineRenderer()
       level_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "level_lines_vert.glsl"}},
                     {GL_GEOMETRY_SHADER, {"line_quad.glsl", "level_lines_geom.glsl"}},
                     {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
+      vectors_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "vectors_vert.glsl"}},
+                {GL_GEOMETRY_SHADER, {"line_quad.glsl", "vectors_geom.glsl"}},
+                {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
       creases_({{GL_VERTEX_SHADER, {"crease_vert.glsl"}},
                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "crease_geom.glsl"}},
                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
@@ -131,6 +134,15 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_step", step);
         level_lines_.set("u_count", s.topo_count);
         mesh.draw_triangles();
+    }
+    // Direction glyphs, 10 pixels long, at about one vertex per 600 pixels of the image.
+    if (s.vectors != 0 && mesh.vertex_count() > 0) {
+        set_common(vectors_, mesh, frame, s);
+        vectors_.set("u_vectors", s.vectors);
+        vectors_.set("u_glyph", 10.0f);
+        const size_t wanted = std::max<size_t>(1, size_t(frame.viewport.x * frame.viewport.y / 600.0f));
+        vectors_.set("u_stride", int(std::max<size_t>(1, mesh.vertex_count() / wanted)));
+        mesh.draw_points();
     }
     if ((s.lines.creases || contours) && mesh.crease_count() > 0) {
         set_common(creases_, mesh, frame, s);

@@ -165,6 +165,11 @@ void MeshBuffers::draw_creases() const {
     glDrawArrays(GL_LINES, 0, GLsizei(creases_ * 2));
 }
 
+void MeshBuffers::draw_points() const {
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_POINTS, 0, GLsizei(vertex_count_));
+}
+
 void MeshBuffers::draw_triangles() const {
     glBindVertexArray(vao_);
     glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);

@@ -38,6 +38,7 @@ public:
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 
     void draw_triangles() const;       // GL_TRIANGLES over every face
+    void draw_points() const;          // GL_POINTS over every vertex
     void draw_triangles(const std::vector<FaceRun>& runs) const;  // the faces of these runs (cluster order)
     void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
     // Sharp edges: per end point its position and the normals of the edge's

@@ -86,6 +86,29 @@ std::optional<float> parse_detail(const std::string& s) {
     return x;
 }
 
+const std::vector<std::string>& vector_names() {
+    static const std::vector<std::string> n{"normal", "principal1", "principal2", "asymptotic", "view"};
+    return n;
+}
+
+std::optional<int> parse_vectors(const std::string& list) {
+    if (list == "none") return 0;
+    int bits = 0;
+    size_t start = 0;
+    for (;;) {
+        const size_t comma = list.find(',', start);
+        const std::string word = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const auto it = std::find(vector_names().begin(), vector_names().end(), word);
+        if (it == vector_names().end()) return std::nullopt;
+        const int bit = 1 << int(it - vector_names().begin());
+        if (bits & bit) return std::nullopt;  // repeated
+        bits |= bit;
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return bits;
+}
+
 std::optional<float> parse_crease_angle(const std::string& s) {
     if (s == "auto") return -1.0f;
     if (s == "off") return 0.0f;

@@ -18,6 +18,9 @@ enum class Shading { None, Lambert, Toon, Hemisphere, ToonBW, Gooch };
 enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
 enum class Hatching { None, Min, Max, Cross };
 
+// Per-vertex direction glyphs (--vectors), as bits.
+enum VectorGlyph { kGlyphNormal = 1, kGlyphPrincipal1 = 2, kGlyphPrincipal2 = 4, kGlyphAsymptotic = 8, kGlyphView = 16 };
+
 struct LineSelection {
     bool contours = true;     // occluding contours: zeros of n.v
     bool suggestive = true;   // suggestive contours: zeros of kr with Dw kr > threshold / fs^2
@@ -43,6 +46,7 @@ struct RenderSettings {
     LineSelection lines;
     float line_width = 2.0f;           // pixels, constant at any zoom
     bool hidden_lines = false;         // also draw the hidden parts of the lines, dashed and light
+    int vectors = 0;                   // glyphs: bits of VectorGlyph (shaders/vectors_geom.glsl)
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
     float rv_threshold = 1.5f;         // dimensionless; ridges and valleys where |kmax| > S / fs
     int isophote_count = 4;            // isophotes at n.l = (k - 1/2) / N, k = 1..N
@@ -83,6 +87,9 @@ std::optional<ColorMap> parse_colormap(const std::string& s);
 std::optional<Hatching> parse_hatching(const std::string& s);
 // "contours,suggestive", "none"; nullopt for unknown or repeated words.
 std::optional<LineSelection> parse_lines(const std::string& list);
+// "normal,principal1,principal2,asymptotic,view" (any of them) or "none": RenderSettings::vectors.
+std::optional<int> parse_vectors(const std::string& list);
+const std::vector<std::string>& vector_names();
 // "off" (0) or a size in pixels in (0, 1000]: RenderSettings::detail.
 std::optional<float> parse_detail(const std::string& s);
 // "auto" (-1), "off" or "0" (0), or degrees in (0, 180): RenderSettings::crease_angle.

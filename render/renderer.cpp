@@ -59,7 +59,7 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     glBindFramebuffer(GL_FRAMEBUFFER, lines_fb_.id());
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (mesh_ && (s.lines.any() || s.hatching != Hatching::None)) line_pass_.draw(*mesh_, frame, s, surface_fb_.depth_texture());
+    if (mesh_ && (s.lines.any() || s.hatching != Hatching::None || s.vectors != 0)) line_pass_.draw(*mesh_, frame, s, surface_fb_.depth_texture());
 
     // 3. Composite into the target, then the colour bar on top.
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);

@@ -196,3 +196,40 @@ TEST_CASE("The light is fixed to the camera by default, to the model with light_
     CHECK(model.at(int(centre.x), int(centre.y)).r == 255);
     CHECK(model.at(int(centre.x), int(centre.y)).r > model.at(int(right.x), int(right.y)).r);
 }
+
+TEST_CASE("Vector glyphs: normals stick out of a sphere's outline, tangents stay within a stroke of it, "
+          "the view direction is a point",
+          "[render][vectors]") {
+    const float R = 1.0f;
+    const Mesh sphere = make_icosphere(R, 4);
+    const SurfaceFields exact = test::sphere_fields(sphere, R);
+    const render::Camera camera = render::Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 30);
+    const render::BoundingSphere bounds = render::bounding_sphere(sphere);
+    // The outline's radius in pixels: the sphere's tangent cone from the eye.
+    const glm::vec2 centre = test::project(camera, bounds, {0, 0, 0}, 256, 256);
+    const float tangent_z = R * R / 5.0f, tangent_r = std::sqrt(R * R - tangent_z * tangent_z);
+    const float outline = glm::length(test::project(camera, bounds, {tangent_r, 0, tangent_z}, 256, 256) - centre);
+    auto draw = [&](int vectors) {
+        render::RenderSettings s = test::lines_only(render::LineSelection{false, false, false, false});
+        s.vectors = vectors;
+        return test::render(sphere, exact, R, camera, s, 256, 256);
+    };
+    auto ink_beyond = [&](const render::Image& im, float radius) {
+        size_t n = 0;
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x)
+                n += test::is_ink(im.at(x, y)) && glm::length(glm::vec2(x + 0.5f, y + 0.5f) - centre) > radius;
+        return n;
+    };
+    const render::Image normals = draw(render::kGlyphNormal), tangents = draw(render::kGlyphPrincipal1),
+                        view = draw(render::kGlyphView);
+    INFO("outline radius " << outline << " px; normal ink " << test::count_ink(normals) << ", beyond the outline "
+                           << ink_beyond(normals, outline + 2) << "; tangent ink " << test::count_ink(tangents)
+                           << ", beyond " << ink_beyond(tangents, outline + 3));
+    CHECK(ink_beyond(normals, outline + 2) > 100);
+    CHECK(test::count_ink(tangents) > 500);
+    // A tangent stroke is centred on its vertex (10 px each way, 2 px wide):
+    // it never reaches further than that past the outline.
+    CHECK(ink_beyond(tangents, outline + 12) == 0);
+    CHECK(test::count_ink(view) == 0);
+}
