@@ -63,6 +63,33 @@ void lines_section(render::RenderSettings& s) {
         ImGui::SliderFloat("ridge threshold", &s.rv_threshold, 0.0f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
         help_tooltip("rv-threshold");
     }
+    ImGui::Checkbox("isophotes", &s.lines.isophotes);
+    help_tooltip("isophotes");
+    ImGui::SameLine();
+    ImGui::Checkbox("topo", &s.lines.topo);
+    help_tooltip("topo");
+    ImGui::SameLine();
+    ImGui::Checkbox("silhouette", &s.lines.silhouette);
+    help_tooltip("lines");
+    if (s.lines.isophotes) {
+        ImGui::SliderInt("isophotes##count", &s.isophote_count, 1, 16);
+        help_tooltip("isophotes");
+    }
+    if (s.lines.topo) {
+        ImGui::SliderInt("topo##count", &s.topo_count, 1, 100);
+        help_tooltip("topo");
+    }
+    ImGui::Checkbox("hidden lines, dashed", &s.hidden_lines);
+    help_tooltip("hidden-lines");
+    // Direction glyphs: one checkbox a direction.
+    const char* glyphs[] = {"normal", "d1", "d2", "asymptotic", "view"};
+    ImGui::TextUnformatted("vectors");
+    for (int i = 0; i < 5; ++i) {
+        if (i != 3) ImGui::SameLine();  // two rows: the panel is narrow
+        bool on = (s.vectors >> i) & 1;
+        if (ImGui::Checkbox(glyphs[i], &on)) s.vectors = on ? s.vectors | (1 << i) : s.vectors & ~(1 << i);
+        help_tooltip("vectors");
+    }
     ImGui::SliderFloat("threshold", &s.sc_threshold, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     help_tooltip("sc-threshold");
     bool detail_on = s.detail > 0;
