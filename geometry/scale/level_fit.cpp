@@ -94,9 +94,7 @@ NeighbourLists gather_neighbourhoods(const ClusterLevel& level, const std::vecto
 ScaleLevelFields fit_level(const ClusterLevel& level) {
     const size_t n = level.size();
     ScaleLevelFields out;
-    out.normal.resize(n);
-    out.curvature.resize(n);
-    out.dcurv.resize(n);
+    out.value.resize(n);
     out.valid.assign(n, 0);
 
     std::vector<glm::vec3> dir(n);
@@ -111,7 +109,7 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
         glm::vec3 sum(0.0f);
         for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) sum += nb.weight[k] * dir[nb.cluster[k]];
         const float len = glm::length(sum);
-        out.normal[p] = len > 0 && std::isfinite(len) ? sum / len : glm::vec3(0, 0, 1);
+        out.value[p].normal = len > 0 && std::isfinite(len) ? sum / len : glm::vec3(0, 0, 1);
     }, 1024);
 
     // 2. Curvature: II e = dn in the tangent frame of each cluster.
@@ -119,13 +117,13 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
     parallel_for(n, [&](size_t p) {
         if (dir[p] == glm::vec3(0.0f)) return;
         glm::vec3 u, v;
-        tangent_frame(out.normal[p], u, v);
+        tangent_frame(out.value[p].normal, u, v);
         double diag[3] = {0, 0, 0}, off[2] = {0, 0}, rhs[3] = {0, 0, 0};
         for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) {
             const uint32_t q = nb.cluster[k];
             const float w = nb.weight[k];
             const glm::vec3 e = level.centroid[q] - level.centroid[p];
-            const glm::vec3 dn = out.normal[q] - out.normal[p];
+            const glm::vec3 dn = out.value[q].normal - out.value[p].normal;
             const float e1 = glm::dot(e, u), e2 = glm::dot(e, v);
             const float n1 = glm::dot(dn, u), n2 = glm::dot(dn, v);
             diag[0] += w * e1 * e1;
@@ -140,7 +138,7 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
         double x[3];
         if (ldlt_solve_tridiagonal<3>(diag, off, rhs, x, kFitTolerance)) {
             curvature[p] = Tensor2{float(x[0]), float(x[1]), float(x[2])};
-            out.curvature[p] = embed(curvature[p], u, v);
+            out.value[p].curvature = embed(curvature[p], u, v);
             out.valid[p] = 1;
         }
     }, 1024);
@@ -149,14 +147,14 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
     parallel_for(n, [&](size_t p) {
         if (!out.valid[p]) return;
         glm::vec3 u, v;
-        tangent_frame(out.normal[p], u, v);
+        tangent_frame(out.value[p].normal, u, v);
         const Tensor2 t0 = curvature[p];
         double diag[4] = {0, 0, 0, 0}, off[3] = {0, 0, 0}, rhs[4] = {0, 0, 0, 0};
         for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) {
             const uint32_t q = nb.cluster[k];
             if (!out.valid[q]) continue;
             const float w = nb.weight[k];
-            const Tensor2 tq = restrict_to(out.curvature[q], u, v);
+            const Tensor2 tq = restrict_to(out.value[q].curvature, u, v);
             const glm::vec3 e = level.centroid[q] - level.centroid[p];
             const float e1 = glm::dot(e, u), e2 = glm::dot(e, v);
             const float duu = tq.ku - t0.ku, duv = tq.kuv - t0.kuv, dvv = tq.kv - t0.kv;
@@ -173,16 +171,12 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
         off[1] = off[2] = off[0];
         double x[4];
         if (ldlt_solve_tridiagonal<4>(diag, off, rhs, x, kFitTolerance))
-            out.dcurv[p] = embed(glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3])), u, v);
+            out.value[p].dcurv = embed(glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3])), u, v);
     }, 1024);
 
-    // What vertices read, one record per cluster (fields_at_scale).
+    // Where each cluster's value sits and how much it weighs (fields_at_scale).
     out.place.resize(n);
-    out.value.resize(n);
-    for (size_t p = 0; p < n; ++p) {
-        out.place[p] = glm::vec4(level.centroid[p], out.valid[p] ? level.area[p] : 0.0f);
-        out.value[p] = {out.normal[p], out.curvature[p], out.dcurv[p]};
-    }
+    for (size_t p = 0; p < n; ++p) out.place[p] = glm::vec4(level.centroid[p], out.valid[p] ? level.area[p] : 0.0f);
     return out;
 }
 

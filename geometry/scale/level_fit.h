@@ -28,19 +28,15 @@
 namespace kappa {
 
 struct ScaleLevelFields {
-    std::vector<glm::vec3> normal;  // unit
-    std::vector<Sym3> curvature;    // II as a tensor of 3D space (tensor3.h)
-    std::vector<SymCubic3> dcurv;   // C as a tensor of 3D space
-    std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
-    // The same, packed per cluster for the per-vertex blend: where (centroid,
-    // and area or 0 where not valid) and what.
+    // One record per cluster, packed for the per-vertex blend.
     struct Value {
-        glm::vec3 normal;
-        Sym3 curvature;
-        SymCubic3 dcurv;
+        glm::vec3 normal;     // unit
+        Sym3 curvature;       // II as a tensor of 3D space (tensor3.h)
+        SymCubic3 dcurv;      // C as a tensor of 3D space
     };
-    std::vector<glm::vec4> place;
     std::vector<Value> value;
+    std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
+    std::vector<glm::vec4> place;   // centroid, and area or 0 where not valid
 
     bool fitted() const { return !valid.empty(); }
 };
