@@ -112,6 +112,9 @@ public:
         double fields_s = 0;
     };
     std::optional<Completion> take_completion();
+    // Computes a completion; the viewer's thread calls it too, when a view
+    // needs the full fields before the worker has them.
+    static Completion complete(std::shared_ptr<const Mesh> mesh, const SmoothingOptions& smoothing);
     // Called after each drawn frame: a completion starts only after the
     // frame that shows its model, so it does not slow that frame down.
     void frame_drawn();
@@ -131,7 +134,6 @@ private:
     void run();
     Result execute(const Request& request);
     ViewResult execute_view(const ViewRequest& request);
-    Completion complete(std::shared_ptr<const Mesh> mesh, const SmoothingOptions& smoothing);
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

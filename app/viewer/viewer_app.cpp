@@ -1,6 +1,5 @@
 #include "app/viewer/viewer_app.h"
 
-#include "geometry/feature_size.h"
 #include "render/gl.h"
 #include "render/gl_loader.h"
 
@@ -33,6 +32,15 @@ float median(Container v) {
     if (v.empty()) return 0;
     std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
     return v[v.size() / 2];
+}
+
+// A model that arrived with normals only takes its full per-vertex fields.
+void adopt_fields(Model& model, BackgroundCompute::Completion c) {
+    model.fields = std::move(c.fields);
+    model.feature_size = c.feature_size;
+    model.summary = c.summary;
+    model.stages = c.stages;
+    model.fields_s += c.fields_s;
 }
 
 }  // namespace
@@ -124,11 +132,7 @@ void ViewerApp::adopt_results() {
     // the drawing does not change (it is at the detail scale), the panel's
     // numbers and `--detail off` get them.
     if (auto c = compute_.take_completion(); c && model_ && c->mesh == model_->mesh) {
-        model_->fields = c->fields;
-        model_->feature_size = c->feature_size;
-        model_->summary = c->summary;
-        model_->stages = c->stages;
-        model_->fields_s += c->fields_s;
+        adopt_fields(*model_, std::move(*c));
         redraw_frames_ = 2;
     }
     auto result = compute_.take();
@@ -159,11 +163,8 @@ void ViewerApp::adopt_results() {
     const auto t = std::chrono::steady_clock::now();
     shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
     const auto complete_fields = [&] {  // on this thread: only small meshes or rare views need it
-        if (model_->fields->has_curvature()) return;
-        auto fields = std::make_shared<SurfaceFields>(compute_surface_fields(*model_->mesh, state_.smoothing));
-        model_->feature_size = feature_size(*model_->mesh, *fields);
-        model_->summary = summarize(*fields);
-        model_->fields = std::move(fields);
+        if (!model_->fields->has_curvature())
+            adopt_fields(*model_, BackgroundCompute::complete(model_->mesh, state_.smoothing));
     };
     if (shown_.detail > 0) {
         const render::ViewScales scales =
