@@ -150,12 +150,13 @@ int run_render(int argc, char** argv) {
 
     try {
         const auto t_load = Clock::now();
-        const Mesh input = load_mesh_or_default(mesh_path);
+        Mesh input = load_mesh_or_default(mesh_path);
         if (input.face_count() == 0)
             return cli::fail(mesh_display_name(mesh_path) + ": the mesh has no faces: nothing to draw");
         // Sharp edges split the mesh: each side gets its own normals and curvature.
         const float crease_angle = render::resolved_crease_angle(s.crease_angle, input);
-        const SplitMesh drawn = split_at_creases(input, find_creases(input, crease_angle));
+        const std::vector<glm::uvec2> creases = find_creases(input, crease_angle);
+        const SplitMesh drawn = split_at_creases(std::move(input), creases);
         const Mesh& mesh = drawn.mesh;
         const double load_s = seconds_since(t_load);
 

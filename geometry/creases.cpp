@@ -53,13 +53,16 @@ float auto_crease_angle(const Mesh& mesh) {
     return interior > 0 && 2 * between <= interior ? kAutoCreaseAngle : 0.0f;
 }
 
-SplitMesh split_at_creases(const Mesh& mesh, const std::vector<glm::uvec2>& creases) {
+SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases) {
     SplitMesh out;
-    out.mesh = mesh;
     const size_t nv = mesh.vertex_count();
     out.original.resize(nv);
     for (size_t v = 0; v < nv; ++v) out.original[v] = uint32_t(v);
-    if (creases.empty()) return out;
+    if (creases.empty()) {  // most scans: no copy
+        out.mesh = std::move(mesh);
+        return out;
+    }
+    out.mesh = mesh;  // split in place below, reading the input's faces
 
     std::vector<uint64_t> crease_keys;
     crease_keys.reserve(creases.size());

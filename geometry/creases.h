@@ -45,7 +45,8 @@ struct SplitMesh {
 // Splits the mesh along `creases` (from find_creases): around each vertex,
 // the faces that reach each other across non-crease edges form one side and
 // share one copy of the vertex. The first side keeps the vertex's number;
-// extra copies are appended. Faces keep their order. Deterministic.
-SplitMesh split_at_creases(const Mesh& mesh, const std::vector<glm::uvec2>& creases);
+// extra copies are appended. Faces keep their order. Deterministic. Takes
+// the mesh by value: callers done with theirs move it in.
+SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases);
 
 }  // namespace kappa

@@ -223,10 +223,11 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
         } else {
             set_stage("loading");
             const auto t = std::chrono::steady_clock::now();
-            const Mesh input = app::load_mesh_or_default(request.path);
+            Mesh input = app::load_mesh_or_default(request.path);
             m.input_vertices = input.vertex_count();
-            SplitMesh split =
-                split_at_creases(input, find_creases(input, render::resolved_crease_angle(request.crease_angle, input)));
+            const std::vector<glm::uvec2> creases =
+                find_creases(input, render::resolved_crease_angle(request.crease_angle, input));
+            SplitMesh split = split_at_creases(std::move(input), creases);
             m.crease_points = render::crease_end_points(split);
             m.mesh = std::make_shared<const Mesh>(std::move(split.mesh));
             m.load_s = seconds_since(t);
