@@ -23,6 +23,23 @@ render::LineSelection only(bool render::LineSelection::*kind) {
     return l;
 }
 
+// Fraction of the ink within r px of any of the given points (pixels), sampling curves.
+double ink_near_points(const render::Image& im, const std::vector<glm::vec2>& points, float r, size_t* ink_out) {
+    size_t ink = 0, near = 0;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            if (!test::is_ink(im.at(x, y))) continue;
+            ++ink;
+            for (const glm::vec2& c : points)
+                if (glm::length(c - glm::vec2(x + 0.5f, y + 0.5f)) < r) {
+                    ++near;
+                    break;
+                }
+        }
+    *ink_out = ink;
+    return ink ? double(near) / double(ink) : 0.0;
+}
+
 // Fraction of the ink within `r` px of the projected circle of radius rho at
 // height z around the z axis, and the ink count.
 std::pair<double, size_t> ink_near_circle(const render::Image& im, const render::Camera& camera,
@@ -32,18 +49,9 @@ std::pair<double, size_t> ink_near_circle(const render::Image& im, const render:
         const float a = 2.0f * float(M_PI) * float(i) / 720.0f;
         circle.push_back(test::project(camera, bounds, {rho * std::cos(a), rho * std::sin(a), z}, im.width, im.height));
     }
-    size_t ink = 0, near = 0;
-    for (int y = 0; y < im.height; ++y)
-        for (int x = 0; x < im.width; ++x) {
-            if (!test::is_ink(im.at(x, y))) continue;
-            ++ink;
-            for (const glm::vec2& c : circle)
-                if (glm::length(c - glm::vec2(x + 0.5f, y + 0.5f)) < r) {
-                    ++near;
-                    break;
-                }
-        }
-    return {ink ? double(near) / double(ink) : 0.0, ink};
+    size_t ink = 0;
+    const double near = ink_near_points(im, circle, r, &ink);
+    return {near, ink};
 }
 
 }  // namespace
@@ -113,27 +121,6 @@ TEST_CASE("An ellipsoid's ridges and valleys lie in its symmetry planes", "[rend
     CHECK(ink > 100);
     CHECK(double(near) > 0.9 * double(ink));
 }
-
-namespace {
-
-// Fraction of the ink within r px of any of the given model-space curves.
-double ink_near_points(const render::Image& im, const std::vector<glm::vec2>& points, float r, size_t* ink_out) {
-    size_t ink = 0, near = 0;
-    for (int y = 0; y < im.height; ++y)
-        for (int x = 0; x < im.width; ++x) {
-            if (!test::is_ink(im.at(x, y))) continue;
-            ++ink;
-            for (const glm::vec2& c : points)
-                if (glm::length(c - glm::vec2(x + 0.5f, y + 0.5f)) < r) {
-                    ++near;
-                    break;
-                }
-        }
-    *ink_out = ink;
-    return ink ? double(near) / double(ink) : 0.0;
-}
-
-}  // namespace
 
 TEST_CASE("A sphere's isophotes are circles around the light direction, its topographic lines circles of latitude",
           "[render][curvature-lines]") {
