@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
+#include "test_shapes.h"
 #include "test_support.h"
 
 #include "geometry/view/default_view.h"
@@ -218,25 +219,15 @@ bool ink_within(const render::Image& im, glm::vec2 p, float r) {
     return false;
 }
 
-}  // namespace
-
-TEST_CASE("A cube draws every visible edge once, unbroken, and no hidden one", "[render][cli][creases]") {
-    const std::string dir = test::temp_dir();
-    test::write_file(dir + "/cube.obj", cube_obj());
-    const auto r = test::run_command(kappa_render(dir + "/cube.obj -o " + dir + "/cube.png --size 400x300 "
-                                                  "--shading none --msaa off --view 30,20"));
-    INFO(r.output);
-    REQUIRE(r.exit_code == 0);
-    CHECK(r.output.find("12 sharp edges") != std::string::npos);
-    const render::Image im = render::read_png(dir + "/cube.png");
-    Mesh cube;
-    for (int i = 0; i < 8; ++i) cube.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
-    const render::BoundingSphere bounds = render::bounding_sphere(cube);
-    const render::Camera camera = render::Camera::framing(bounds, 30.0f, 400.0f / 300.0f, view_direction({30, 20}));
-    const glm::vec3 eye = camera.eye();
-    // The 12 edges (corners differing in one coordinate); visible when one of
-    // their two faces faces the eye.
-    int visible_edges = 0;
+// The unit cube's 12 edges (corners a < b differing in one coordinate, as in
+// test::unit_cube), each visible when one of its two faces faces the eye.
+struct CubeEdge {
+    int a, b;
+    glm::vec3 p, q;
+    bool visible;
+};
+std::vector<CubeEdge> cube_edges(const Mesh& cube, const glm::vec3& eye) {
+    std::vector<CubeEdge> edges;
     for (int a = 0; a < 8; ++a)
         for (int bit : {1, 2, 4}) {
             const int b = a | bit;
@@ -250,17 +241,38 @@ TEST_CASE("A cube draws every visible edge once, unbroken, and no hidden one", "
                 n[axis] = (a & other) ? 1.0f : -1.0f;
                 visible |= glm::dot(n, eye - p) > 0;
             }
-            int inked = 0, samples = 0;
-            for (float t = 0.05f; t < 0.96f; t += 0.01f, ++samples)  // every pixel or so along the edge
-                inked += ink_within(im, test::project(camera, bounds, glm::mix(p, q, t), 400, 300), 1.5f);
-            INFO("edge " << a << "-" << b << (visible ? " visible" : " hidden") << ": " << inked << " of " << samples);
-            if (visible) {
-                ++visible_edges;
-                CHECK(inked == samples);  // drawn all along: no gap
-            } else {
-                CHECK(inked < samples / 4);  // hidden: only where it crosses a visible edge
-            }
+            edges.push_back({a, b, p, q, visible});
         }
+    return edges;
+}
+
+}  // namespace
+
+TEST_CASE("A cube draws every visible edge once, unbroken, and no hidden one", "[render][cli][creases]") {
+    const std::string dir = test::temp_dir();
+    test::write_file(dir + "/cube.obj", cube_obj());
+    const auto r = test::run_command(kappa_render(dir + "/cube.obj -o " + dir + "/cube.png --size 400x300 "
+                                                  "--shading none --msaa off --view 30,20"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("12 sharp edges") != std::string::npos);
+    const render::Image im = render::read_png(dir + "/cube.png");
+    const Mesh cube = test::unit_cube();
+    const render::BoundingSphere bounds = render::bounding_sphere(cube);
+    const render::Camera camera = render::Camera::framing(bounds, 30.0f, 400.0f / 300.0f, view_direction({30, 20}));
+    int visible_edges = 0;
+    for (const CubeEdge& e : cube_edges(cube, camera.eye())) {
+        int inked = 0, samples = 0;
+        for (float t = 0.05f; t < 0.96f; t += 0.01f, ++samples)  // every pixel or so along the edge
+            inked += ink_within(im, test::project(camera, bounds, glm::mix(e.p, e.q, t), 400, 300), 1.5f);
+        INFO("edge " << e.a << "-" << e.b << (e.visible ? " visible" : " hidden") << ": " << inked << " of " << samples);
+        if (e.visible) {
+            ++visible_edges;
+            CHECK(inked == samples);  // drawn all along: no gap
+        } else {
+            CHECK(inked < samples / 4);  // hidden: only where it crosses a visible edge
+        }
+    }
     CHECK(visible_edges == 9);
 }
 
@@ -400,11 +412,9 @@ TEST_CASE("Hidden lines on: a cube draws its hidden edges dashed and light and i
                                                   "--shading none --msaa off --view 30,20 --hidden-lines on"));
     REQUIRE(r.exit_code == 0);
     const render::Image im = render::read_png(dir + "/h.png");
-    Mesh cube;
-    for (int i = 0; i < 8; ++i) cube.positions.push_back({float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)});
+    const Mesh cube = test::unit_cube();
     const render::BoundingSphere bounds = render::bounding_sphere(cube);
     const render::Camera camera = render::Camera::framing(bounds, 30.0f, 400.0f / 300.0f, view_direction({30, 20}));
-    const glm::vec3 eye = camera.eye();
     // The darkest value within 1 px of a point.
     auto darkest = [&](glm::vec2 p) {
         int v = 255;
@@ -413,32 +423,21 @@ TEST_CASE("Hidden lines on: a cube draws its hidden edges dashed and light and i
                 if (x >= 0 && y >= 0 && x < im.width && y < im.height) v = std::min(v, int(im.at(x, y).r));
         return v;
     };
-    for (int a = 0; a < 8; ++a)
-        for (int bit : {1, 2, 4}) {
-            const int b = a | bit;
-            if (b == a) continue;
-            bool visible = false;
-            for (int other : {1, 2, 4}) {
-                if (other == bit) continue;
-                glm::vec3 n(0.0f);
-                n[other == 1 ? 0 : other == 2 ? 1 : 2] = (a & other) ? 1.0f : -1.0f;
-                visible |= glm::dot(n, eye - cube.positions[size_t(a)]) > 0;
-            }
-            int black = 0, grey = 0, white = 0;
-            for (float t = 0.15f; t < 0.86f; t += 0.01f) {
-                const int v = darkest(test::project(camera, bounds, glm::mix(cube.positions[size_t(a)],
-                                                                              cube.positions[size_t(b)], t), 400, 300));
-                (v < 100 ? black : v < 230 ? grey : white)++;
-            }
-            INFO("edge " << a << "-" << b << ": black " << black << ", grey " << grey << ", white " << white);
-            if (visible) {
-                CHECK(white == 0);
-                CHECK(black > grey);
-            } else {  // dashed: light ink with gaps, never full black away from the visible edges
-                CHECK(grey > 10);
-                CHECK(white > 5);
-            }
+    for (const CubeEdge& e : cube_edges(cube, camera.eye())) {
+        int black = 0, grey = 0, white = 0;
+        for (float t = 0.15f; t < 0.86f; t += 0.01f) {
+            const int v = darkest(test::project(camera, bounds, glm::mix(e.p, e.q, t), 400, 300));
+            (v < 100 ? black : v < 230 ? grey : white)++;
         }
+        INFO("edge " << e.a << "-" << e.b << ": black " << black << ", grey " << grey << ", white " << white);
+        if (e.visible) {
+            CHECK(white == 0);
+            CHECK(black > grey);
+        } else {  // dashed: light ink with gaps, never full black away from the visible edges
+            CHECK(grey > 10);
+            CHECK(white > 5);
+        }
+    }
 }
 
 TEST_CASE("Lines silhouette: the whole exterior outline and no interior contour", "[render][cli]") {
