@@ -11,15 +11,11 @@
 
 namespace kappa {
 
-namespace {
-
 glm::vec3 face_normal(const Mesh& mesh, const Face& f) {
     const glm::vec3 c = glm::cross(mesh.positions[f[1]] - mesh.positions[f[0]], mesh.positions[f[2]] - mesh.positions[f[0]]);
     const float len = glm::length(c);
     return len > 0 && std::isfinite(len) ? c / len : glm::vec3(0.0f);
 }
-
-}  // namespace
 
 std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg) {
     std::vector<glm::uvec2> out;

@@ -20,6 +20,11 @@
 
 namespace kappa {
 
+// The unit normal of a face (counter-clockwise from outside); zero where
+// the face is degenerate or not finite. The two faces of a crease bend by
+// the angle between theirs.
+glm::vec3 face_normal(const Mesh& mesh, const Face& f);
+
 // The crease edges as vertex pairs (v0 < v1, sorted). angle_deg <= 0: none.
 std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg);
 

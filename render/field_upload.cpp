@@ -44,14 +44,9 @@ std::vector<glm::vec3> crease_end_points(const SplitMesh& split) {
     std::vector<glm::vec3> out;
     out.reserve(split.creases.size() * 6);
     const Mesh& m = split.mesh;
-    auto normal = [&](uint32_t f) {
-        const Face& t = m.faces[f];
-        const glm::vec3 c = glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
-        const float len = glm::length(c);
-        return len > 0 ? c / len : glm::vec3(0.0f);
-    };
     for (size_t e = 0; e < split.creases.size(); ++e) {
-        const glm::vec3 na = normal(split.crease_faces[e].x), nb = normal(split.crease_faces[e].y);
+        const glm::vec3 na = face_normal(m, m.faces[split.crease_faces[e].x]);
+        const glm::vec3 nb = face_normal(m, m.faces[split.crease_faces[e].y]);
         for (uint32_t v : {split.creases[e].x, split.creases[e].y}) out.insert(out.end(), {m.positions[v], na, nb});
     }
     return out;
