@@ -24,13 +24,6 @@ using namespace kappa;
 
 namespace {
 
-float mean_edge(const Mesh& mesh) {
-    double sum = 0;
-    for (const Face& f : mesh.faces)
-        for (int k = 0; k < 3; ++k) sum += glm::length(mesh.positions[f[k]] - mesh.positions[f[(k + 1) % 3]]);
-    return float(sum / double(3 * mesh.face_count()));
-}
-
 bool all_finite(const SurfaceFields& f) {
     for (size_t v = 0; v < f.size(); ++v) {
         const float values[] = {f.normals[v].x, f.normals[v].y, f.normals[v].z, f.k1[v], f.k2[v], f.d1[v].x,
@@ -126,7 +119,7 @@ TEST_CASE("A sphere keeps its curvature 1/R and C = 0 at every scale", "[scale-s
     const Mesh mesh = make_jittered_sphere(R, 5, 0.6f, 9);
     const SurfaceFields raw = compute_surface_fields(mesh);
     ScaleSpace space = build_scale_space(mesh);
-    const float h = mean_edge(mesh);
+    const float h = mean_edge_length(mesh);
     for (float edges : {1.0f, 3.0f, 8.0f, 20.0f}) {  // 20 edges: beyond the top level (R / 4)
         const SurfaceFields f = fields_at_scale(mesh, space, raw, edges * h);
         double k_err = 0, c_max = 0, n_err = 0;
@@ -150,7 +143,7 @@ TEST_CASE("A sphere keeps its curvature 1/R and C = 0 at every scale", "[scale-s
 TEST_CASE("Curvature and C at a scale are accurate on a torus, and remove noise", "[scale-space]") {
     const double R = 1, r = 0.4;
     test::AnalyticMesh torus = test::analytic_torus(R, r, 200, 100);
-    const float h = mean_edge(torus.mesh);
+    const float h = mean_edge_length(torus.mesh);
     {
         const SurfaceFields raw = compute_surface_fields(torus.mesh);
         ScaleSpace space = build_scale_space(torus.mesh);
@@ -177,7 +170,7 @@ TEST_CASE("Curvature and C at a scale are accurate on a torus, and remove noise"
 
 TEST_CASE("Larger scales smooth scan-like noise away", "[scale-space]") {
     Mesh mesh = make_icosphere(1.0f, 6);
-    const float h = mean_edge(mesh);
+    const float h = mean_edge_length(mesh);
     add_normal_noise(mesh, 0.3f * h, 3);
     const SurfaceFields raw = compute_surface_fields(mesh);
     ScaleSpace space = build_scale_space(mesh);

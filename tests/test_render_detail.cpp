@@ -56,13 +56,6 @@ render::Camera default_camera(const Mesh& mesh) {
     return render::Camera::framing(render::bounding_sphere(mesh), 30.0f, float(kWidth) / float(kHeight));
 }
 
-float mean_edge(const Mesh& mesh) {
-    double sum = 0;
-    for (const Face& f : mesh.faces)
-        for (int k = 0; k < 3; ++k) sum += glm::length(mesh.positions[f[k]] - mesh.positions[f[(k + 1) % 3]]);
-    return float(sum / double(3 * mesh.face_count()));
-}
-
 struct Agreement {
     double a_in_b, b_in_a;
 };
@@ -96,7 +89,7 @@ TEST_CASE("One smooth shape draws the same lines on any tessellation and with sc
     test::maybe_save(reference, "detail-shape-1.3M");
 
     Mesh noisy = clean;
-    add_normal_noise(noisy, 0.3f * mean_edge(clean), 7);
+    add_normal_noise(noisy, 0.3f * mean_edge_length(clean), 7);
     struct Case {
         const char* name;
         Mesh mesh;
@@ -119,7 +112,7 @@ TEST_CASE("One smooth shape draws the same lines on any tessellation and with sc
 
     // Without detail the noisy mesh is covered in scribbles: the test can fail.
     Mesh noisy_again = clean;
-    add_normal_noise(noisy_again, 0.3f * mean_edge(clean), 7);
+    add_normal_noise(noisy_again, 0.3f * mean_edge_length(clean), 7);
     const render::Image raw = draw(noisy_again, camera, 0.0f);
     const double raw_agreement = render::ink_within(raw, draw(clean, camera, 0.0f), 2.0f);
     INFO("detail off: noisy ink within 2 px of the clean drawing " << raw_agreement);

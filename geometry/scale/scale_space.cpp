@@ -14,20 +14,6 @@ namespace {
 
 constexpr float kPushRadius = 1.25f;  // a vertex takes values from clusters within 1.25 cells
 
-float mean_edge_length(const Mesh& mesh) {
-    double sum = 0;
-    size_t n = 0;
-    for (const Face& f : mesh.faces)
-        for (int e = 0; e < 3; ++e) {
-            const float l = glm::length(mesh.positions[f[(e + 1) % 3]] - mesh.positions[f[e]]);
-            if (l > 0 && std::isfinite(l)) {
-                sum += l;
-                ++n;
-            }
-        }
-    return n ? float(sum / double(n)) : 0.0f;
-}
-
 // One level's value at a vertex: the kernel-weighted mean over the
 // vertex's cluster and the adjacent ones, weight area x (1 - (d / R)^2)^2
 // with R = 1.25 cells. Sums; normal() and mean() finish them.
@@ -146,6 +132,20 @@ void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& ra
 }
 
 }  // namespace
+
+float mean_edge_length(const Mesh& mesh) {
+    double sum = 0;
+    size_t n = 0;
+    for (const Face& f : mesh.faces)
+        for (int e = 0; e < 3; ++e) {
+            const float l = glm::length(mesh.positions[f[(e + 1) % 3]] - mesh.positions[f[e]]);
+            if (l > 0 && std::isfinite(l)) {
+                sum += l;
+                ++n;
+            }
+        }
+    return n ? float(sum / double(n)) : 0.0f;
+}
 
 ScaleSpace build_scale_space(const Mesh& mesh) {
     ScaleSpace space;

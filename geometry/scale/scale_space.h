@@ -50,6 +50,10 @@ struct ScaleSpace {
     float max_scale() const { return empty() ? raw_scale : level_scale(levels.size() - 1); }
 };
 
+// The mean length of the faces' edges (each interior edge counted from both
+// of its faces), skipping zero and non-finite ones: the unit of the scales.
+float mean_edge_length(const Mesh& mesh);
+
 // Sets up the levels (first cell 1.5 mean edge lengths, doubling up to a
 // quarter of the bounding radius), none built yet: cheap.
 ScaleSpace build_scale_space(const Mesh& mesh);
