@@ -1,10 +1,14 @@
 // The default view (geometry/view/default_view.h): angles and directions,
 // and a cube seen from three-quarters, three faces at once.
 #include "geometry/view/default_view.h"
+#include "geometry/io/mesh_io.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "test_shapes.h"
+#include "test_support.h"
 
 #include <catch2/catch.hpp>
 
@@ -53,4 +57,54 @@ TEST_CASE("The default view does not depend on the order of the faces or on a me
     const ViewAngles c = choose_default_view(flat);
     CHECK(c.azimuth == 30.0f);
     CHECK(c.elevation == 20.0f);
+}
+
+namespace {
+
+// A toy animal: a long body along z (legs below it) with a tall head at the
+// front end, at z = front_z.
+Mesh toy_animal(float front_z) {
+    const float s = front_z > 0 ? 1.0f : -1.0f;
+    Mesh m = test::box({-0.5f, 0.0f, -1.5f}, {0.5f, 1.0f, 1.5f});
+    for (float x : {-0.4f, 0.2f})
+        for (float z : {-1.3f, 1.1f}) test::append(m, test::box({x, -1.0f, z}, {x + 0.2f, 0.0f, z + 0.2f}));
+    test::append(m, test::box({-0.4f, 0.5f, std::min(s * 1.2f, s * 2.2f)}, {0.4f, 1.8f, std::max(s * 1.2f, s * 2.2f)}));
+    return m;
+}
+
+float towards(ViewAngles a, glm::vec2 front) {
+    const glm::vec3 d = view_direction(a);
+    return glm::dot(glm::normalize(glm::vec2(d.x, d.z)), front);
+}
+
+}  // namespace
+
+TEST_CASE("The default view never shows a model with a front from behind", "[view]") {
+    // The head (the tallest part) at -z, then at +z: the view comes from
+    // within 50 degrees of that end, whichever it is.
+    for (float front_z : {-1.0f, 1.0f}) {
+        const ViewAngles a = choose_default_view(toy_animal(front_z));
+        INFO("head towards z " << front_z << ": azimuth " << a.azimuth);
+        CHECK(towards(a, {0, front_z}) >= std::cos(glm::radians(50.0f)) - 1e-5f);
+    }
+    // Spot the cow faces -z; shape alone prefers its rump (see default_view.h).
+    const ViewAngles spot = choose_default_view(load_mesh(test::shared_mesh("spot.obj")));
+    INFO("spot: azimuth " << spot.azimuth);
+    CHECK(towards(spot, {0, -1}) >= std::cos(glm::radians(50.0f)) - 1e-5f);
+    CHECK(std::fmod(std::fabs(spot.azimuth), 90.0f) != 0.0f);  // still three-quarter
+}
+
+TEST_CASE("The front rule leaves models without a front alone", "[view]") {
+    // A long box with a level top has no front: its view is the same as the
+    // same box turned by 180 degrees, mirrored.
+    const Mesh bar = test::box({-0.5f, 0.0f, -1.5f}, {0.5f, 1.0f, 1.5f});
+    Mesh turned = bar;
+    for (glm::vec3& p : turned.positions) p = {-p.x, p.y, -p.z};
+    const ViewAngles a = choose_default_view(bar), b = choose_default_view(turned);
+    const glm::vec3 da = view_direction(a), db = view_direction(b);
+    INFO("azimuths " << a.azimuth << ", " << b.azimuth);
+    // Both are among the equally good symmetric views: same elevation, and
+    // the same angle to the long axis.
+    CHECK(a.elevation == b.elevation);
+    CHECK(std::fabs(std::fabs(da.z) - std::fabs(db.z)) < 1e-5f);
 }

@@ -3,6 +3,8 @@
 
 #include "geometry/mesh.h"
 
+#include <cstdint>
+
 namespace kappa::test {
 
 // The unit cube [0, 1]^3: 8 vertices, two triangles a face, counter-clockwise
@@ -14,6 +16,20 @@ inline Mesh unit_cube() {
                           {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
     for (const Face& f : faces) m.faces.push_back(f);
     return m;
+}
+
+// An axis-aligned box from lo to hi (the unit cube scaled and moved).
+inline Mesh box(glm::vec3 lo, glm::vec3 hi) {
+    Mesh m = unit_cube();
+    for (glm::vec3& p : m.positions) p = lo + p * (hi - lo);
+    return m;
+}
+
+// The faces of b appended to a (a union of separate pieces).
+inline void append(Mesh& a, const Mesh& b) {
+    const uint32_t base = uint32_t(a.positions.size());
+    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+    for (Face f : b.faces) a.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
 }
 
 }  // namespace kappa::test

@@ -1,6 +1,7 @@
 #include "default_view.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <array>
@@ -25,6 +26,58 @@ std::array<glm::vec3, kBins> bin_directions() {
         dirs[size_t(i)] = {r * std::cos(golden * float(i)), y, r * std::sin(golden * float(i))};
     }
     return dirs;
+}
+
+// Animals, figures and vehicles are longer than wide and carry their tallest
+// parts at their front end: a head, horns, ears, a cab. The surface is
+// sampled by face centroids weighted by area (every step-th face). Its long
+// horizontal axis is the principal axis of the xz second moments; when it is
+// clearly the long one (moment ratio at least 1.5) and the top fifth of the
+// model (by height) sits towards one of its ends (its centroid at least 0.2
+// of the model's half-length along the axis from the whole's), that end is
+// the front and the unit xz direction towards it is returned. Otherwise (a
+// cube, a vase, a part with a level top) there is no front: 0.
+glm::vec2 front_of_upright_model(const Mesh& mesh, size_t step) {
+    struct Sample { glm::dvec2 xz; float y; double w; };
+    std::vector<Sample> samples;
+    float y_min = INFINITY, y_max = -INFINITY;
+    glm::dvec2 centroid(0);
+    double total = 0;
+    for (size_t f = 0; f < mesh.face_count(); f += step) {
+        const Face& t = mesh.faces[f];
+        const glm::vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+        const double w = 0.5 * glm::length(glm::cross(b - a, c - a));
+        const glm::vec3 p = (a + b + c) / 3.0f;
+        if (!(w > 0) || !std::isfinite(w) || !std::isfinite(p.x + p.y + p.z)) continue;
+        samples.push_back({glm::dvec2(p.x, p.z), p.y, w});
+        y_min = std::min(y_min, p.y), y_max = std::max(y_max, p.y);
+        centroid += w * glm::dvec2(p.x, p.z), total += w;
+    }
+    if (!(total > 0)) return glm::vec2(0);
+    centroid /= total;
+    double sxx = 0, sxz = 0, szz = 0;
+    for (const Sample& s : samples) {
+        const glm::dvec2 d = s.xz - centroid;
+        sxx += s.w * d.x * d.x, sxz += s.w * d.x * d.y, szz += s.w * d.y * d.y;
+    }
+    // Eigen-decomposition of the symmetric 2x2 moment matrix.
+    const double mean = 0.5 * (sxx + szz), half_gap = std::hypot(0.5 * (sxx - szz), sxz);
+    const double large = mean + half_gap, small = mean - half_gap;
+    if (!(large >= 1.5 * small) || !(large > 0)) return glm::vec2(0);
+    const double angle = 0.5 * std::atan2(2 * sxz, sxx - szz);
+    const glm::dvec2 axis(std::cos(angle), std::sin(angle));
+
+    const float y_top = y_max - 0.2f * (y_max - y_min);
+    double top = 0, w_top = 0, half_length = 0;
+    for (const Sample& s : samples) {
+        const double along = glm::dot(s.xz - centroid, axis);
+        half_length = std::max(half_length, std::fabs(along));
+        if (s.y >= y_top) top += s.w * along, w_top += s.w;
+    }
+    if (!(w_top > 0) || !(half_length > 0)) return glm::vec2(0);
+    top /= w_top;
+    if (!(std::fabs(top) >= 0.2 * half_length)) return glm::vec2(0);
+    return glm::vec2(top > 0 ? axis : -axis);
 }
 
 }  // namespace
@@ -84,6 +137,7 @@ ViewAngles choose_default_view(const Mesh& mesh) {
         candidates.push_back({-165, el});
     }
     if (area_normals.empty()) return {30, 20};
+    const glm::vec2 front = front_of_upright_model(mesh, step);
 
     std::vector<double> entropy(candidates.size()), projected(candidates.size()), detail(candidates.size());
     double max_projected = 0, max_detail = 0;
@@ -104,13 +158,26 @@ ViewAngles choose_default_view(const Mesh& mesh) {
         projected[c] = total;
         max_projected = std::max(max_projected, total);
     }
-    size_t best = 0;
-    double best_score = -1;
-    for (size_t c = 0; c < candidates.size(); ++c) {
-        const double score = entropy[c] + 0.5 * (max_projected > 0 ? projected[c] / max_projected : 0.0) +
-                             kDetailWeight * (max_detail > 0 ? detail[c] / max_detail : 0.0);
-        if (score > best_score + 1e-6) best = c, best_score = score;
-    }
+    // Cosine between a candidate's horizontal direction and the model's front.
+    auto towards_front = [&](size_t c) {
+        const glm::vec3 d = view_direction(candidates[c]);
+        return glm::dot(glm::normalize(glm::vec2(d.x, d.z)), front);
+    };
+    auto best_of = [&](float min_towards_front) {
+        size_t best = 0;
+        double best_score = -1;
+        for (size_t c = 0; c < candidates.size(); ++c) {
+            if (towards_front(c) < min_towards_front) continue;
+            const double score = entropy[c] + 0.5 * (max_projected > 0 ? projected[c] / max_projected : 0.0) +
+                                 kDetailWeight * (max_detail > 0 ? detail[c] / max_detail : 0.0);
+            if (score > best_score + 1e-6) best = c, best_score = score;
+        }
+        return best;
+    };
+    size_t best = best_of(-1.0f);
+    // Never from behind: a best view more than 120 degrees from the model's
+    // front gives way to the best within 50 degrees of it.
+    if (front != glm::vec2(0) && towards_front(best) < -0.5f) best = best_of(0.64f);
     return candidates[best];
 }
 

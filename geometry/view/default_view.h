@@ -14,7 +14,17 @@
 // projected area P, relative to the largest over the candidates, how much of
 // the model. Score = H / ln 64 + 0.5 P / P_max. Ties (within 1e-6) go to
 // the candidate first in the order: azimuth 30, -30, 45, -45, ... then
-// elevation 20 before 35. Occlusion is ignored. Large meshes are sampled:
+// elevation 20 before 35. Occlusion is ignored.
+// Never from behind: shape alone cannot tell a cow's face from its rump (both
+// are rounded and about as curved), so a model that has a front by the test
+// below is not shown from more than 120 degrees away from it; the best view
+// within 50 degrees of its front is taken instead. The front: animals,
+// figures and vehicles are longer than wide and carry their tallest parts at
+// the front end (a head, horns, ears, a cab). When the horizontal second
+// moments have a clear long axis (ratio >= 1.5) and the top fifth of the
+// model by height lies towards one end of it (centroid >= 0.2 of the
+// half-length off the whole's), that end is the front. A cube, a vase, a
+// part with a level top have none. Large meshes are sampled:
 // every ceil(F / 200000)-th face, so the choice is deterministic.
 #pragma once
 
