@@ -21,6 +21,7 @@
 #include "render/image_writer.h"
 #include "render/render_settings.h"
 #include "render/renderer.h"
+#include "render/vector_view.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -119,8 +120,9 @@ int run_render(int argc, char** argv) {
         return 2;
     }
     // Everything that can be checked before the mesh is read and curvature computed.
-    if (!render::image_format_for(out_path)) {
-        std::fprintf(stderr, "kappa render: cannot tell the image format of '%s': use .png, .jpg or .jpeg\n",
+    const auto vector_format = render::vector_format_for(out_path);
+    if (!render::image_format_for(out_path) && !vector_format) {
+        std::fprintf(stderr, "kappa render: cannot tell the image format of '%s': use .png, .jpg, .jpeg, .svg or .pdf\n",
                      out_path.c_str());
         return 2;
     }
@@ -245,18 +247,22 @@ int run_render(int argc, char** argv) {
             // Upload: once, or per view when the fields follow the view (--detail).
             const auto t_upload = Clock::now();
             float view_fs = fs;
+            render::DetailFields d;  // with detail: this view's fields
+            const SurfaceFields* view_fields = &fields;
             if (s.detail > 0) {
                 const render::ViewScales scales = render::view_scales(mesh, detail_source, view, size.y, s.detail);
                 if (!fields.has_curvature() && render::needs_raw_curvature(detail_source, scales))
                     fields = compute_fields();
-                render::DetailFields d = render::detail_fields(mesh, detail_source, fields, scales);
+                d = render::detail_fields(mesh, detail_source, fields, scales);
                 view_fs = d.feature_size;
+                view_fields = &d.fields;
                 if (i == 0) {
                     renderer.set_mesh(mesh, d.fields, view_fs, d.fine_normals);
                     renderer.set_creases(render::crease_end_points(drawn));
                 }
                 else renderer.update_fields(mesh, d.fields, view_fs, d.fine_normals);
             } else if (i == 0) {
+                view_fields = &fields;
                 renderer.set_mesh(mesh, fields, fs);
                 renderer.set_creases(render::crease_end_points(drawn));
             }
@@ -270,10 +276,19 @@ int run_render(int argc, char** argv) {
                                 s.colormap == render::ColorMap::DCurv ? "[0, " : "[-",
                                 renderer.mesh()->map_range(s.colormap));
             }
+            const std::string path = turntable ? numbered_path(out_path, i) : out_path;
             const auto t_render = Clock::now();
+            if (vector_format) {
+                const render::StrokeSource source{&mesh, view_fields, &d.fine_normals,
+                                                  {&drawn.creases, &drawn.crease_faces}, view_fs};
+                render::write_vector_view(renderer, view, s, size.x, size.y, source, *vector_format, path);
+                if (!quiet)
+                    std::printf("  wrote %s (%dx%d): render, strokes and write %.3f s\n", path.c_str(), size.x,
+                                size.y, seconds_since(t_render));
+                continue;
+            }
             const render::Image image = render::render_to_image(renderer, view, s, size.x, size.y);
             const double render_s = seconds_since(t_render);
-            const std::string path = turntable ? numbered_path(out_path, i) : out_path;
             const auto t_write = Clock::now();
             render::write_image(path, image);
             if (!quiet)

@@ -3,7 +3,8 @@
 #   - glad 2 is generated at build time (python3-glad, offline with --reproducible)
 #   - shaders/*.glsl are embedded into the library as string literals, so the
 #     kappa executable runs from any directory
-#   - EGL for headless contexts, libpng for PNG output, libstb (stb_image_write) for JPEG
+#   - EGL for headless contexts, libpng for PNG output, libstb (stb_image_write) for JPEG,
+#     cairo for PDF output
 
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(PNG REQUIRED)
@@ -42,3 +43,5 @@ target_link_libraries(kappa_render PUBLIC kappa_geometry kappa_glad OpenGL::Open
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(KAPPA_UI REQUIRED IMPORTED_TARGET glfw3 imgui)
 target_link_libraries(kappa_render PUBLIC PkgConfig::KAPPA_UI)
+pkg_check_modules(KAPPA_CAIRO REQUIRED IMPORTED_TARGET cairo cairo-pdf)
+target_link_libraries(kappa_render PRIVATE PkgConfig::KAPPA_CAIRO)

@@ -111,6 +111,14 @@ Image Framebuffer::read(bool unpremultiply) const {
     return image;
 }
 
+std::vector<float> Framebuffer::read_depth() const {
+    std::vector<float> depth(size_t(spec_.width) * size_t(spec_.height));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, spec_.width, spec_.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    return depth;
+}
+
 void resolve(const Framebuffer& from, const Framebuffer& to) {
     const int w = from.spec().width, h = from.spec().height;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, from.id());

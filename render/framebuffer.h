@@ -6,6 +6,8 @@
 #include "render/gl.h"
 #include "render/image.h"
 
+#include <vector>
+
 namespace kappa::render {
 
 class Framebuffer {
@@ -39,6 +41,9 @@ public:
     // Reads the colour attachment as 8-bit RGBA, top row first. With
     // `unpremultiply`, colours are divided by alpha (PNG stores straight alpha).
     Image read(bool unpremultiply) const;
+    // Reads the depth attachment (window depth in [0, 1], 1 = background),
+    // bottom row first as in GL window coordinates. Single-sampled only.
+    std::vector<float> read_depth() const;
 
 private:
     void release();

@@ -1,5 +1,6 @@
 #include "render/mesh_buffers.h"
 
+#include "geometry/lines/line_extraction.h"
 #include "geometry/surface_samples.h"
 #include "geometry/vertex_flags.h"
 #include "render/colormap.h"
@@ -17,32 +18,6 @@ namespace {
 // enough that a frame has few runs to draw.
 constexpr uint32_t kClusterFaces = 256;
 
-
-// Edges used by exactly one face, as vertex index pairs. Only faces with
-// two or more boundary-flagged vertices can hold one, when flags exist.
-std::vector<uint32_t> boundary_edges(const Mesh& mesh, const SurfaceFields& fields) {
-    const bool use_flags = fields.flags.size() == mesh.positions.size();
-    if (use_flags && std::none_of(fields.flags.begin(), fields.flags.end(),
-                                  [](uint8_t f) { return f & kFlagBoundary; }))
-        return {};
-    auto on_boundary = [&](uint32_t v) { return !use_flags || (fields.flags[v] & kFlagBoundary); };
-    std::vector<uint64_t> keys;
-    for (const auto& f : mesh.faces)
-        for (int k = 0; k < 3; ++k) {
-            uint32_t a = f[k], b = f[(k + 1) % 3];
-            if (!on_boundary(a) || !on_boundary(b)) continue;
-            keys.push_back(uint64_t(std::min(a, b)) << 32 | std::max(a, b));
-        }
-    std::sort(keys.begin(), keys.end());
-    std::vector<uint32_t> out;
-    for (size_t i = 0; i < keys.size();) {
-        size_t j = i;
-        while (j < keys.size() && keys[j] == keys[i]) ++j;
-        if (j - i == 1) out.push_back(uint32_t(keys[i] >> 32)), out.push_back(uint32_t(keys[i]));
-        i = j;
-    }
-    return out;
-}
 
 void set_attribute(GLuint location, int components, size_t offset) {
     glEnableVertexAttribArray(location);
@@ -85,15 +60,15 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
 
     // Boundary edges share the vertex buffer through a second VAO.
-    const std::vector<uint32_t> edges = boundary_edges(mesh, fields);
-    boundary_edges_ = edges.size() / 2;
+    const std::vector<glm::uvec2> edges = boundary_edges(mesh, fields.flags);
+    boundary_edges_ = edges.size();
     glGenVertexArrays(1, &edge_vao_);
     glBindVertexArray(edge_vao_);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     set_vertex_attributes();
     glGenBuffers(1, &edge_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_buffer_);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(uint32_t)), edges.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(glm::uvec2)), edges.data(), GL_STATIC_DRAW);
 
     // Hatching seeds: position, normal, direction (shaders/hatch_vert.glsl).
     glGenVertexArrays(1, &sample_vao_);

@@ -42,6 +42,10 @@ public:
     void upload_fields(FieldUpload&& prepared);
     const MeshBuffers* mesh() const { return mesh_.get(); }
 
+    // The surface depth of the last frame drawn (window depth, 1 = background,
+    // bottom row first): what the line passes test visibility against.
+    std::vector<float> surface_depth() const { return surface_fb_.read_depth(); }
+
     // Draws one view into `target`. Without a mesh, clears to the background.
     void render(const Camera& camera, const RenderSettings& settings, const RenderTarget& target);
 

@@ -4,10 +4,11 @@
 set -euo pipefail
 PACKAGES=(
   cmake g++ ninja-build pkg-config
-  libglm-dev libtinyobjloader-dev libtinygltf-dev catch2 libpng-dev libstb-dev
+  libglm-dev libtinyobjloader-dev libtinygltf-dev catch2 libpng-dev libstb-dev libcairo2-dev
   libglfw3-dev libimgui-dev python3-glad
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   xvfb xauth
+  librsvg2-bin poppler-utils
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -1,0 +1,91 @@
+#include "chain.h"
+
+#include <algorithm>
+#include <cstring>
+#include <unordered_map>
+
+namespace kappa {
+
+namespace {
+
+struct PointKey {
+    uint32_t x, y, z;
+    bool operator==(const PointKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct PointKeyHash {
+    size_t operator()(const PointKey& k) const {
+        return (size_t(k.x) * 73856093u) ^ (size_t(k.y) * 19349663u) ^ (size_t(k.z) * 83492791u);
+    }
+};
+
+PointKey key_of(glm::vec3 p) {
+    if (p.x == 0) p.x = 0;  // -0 and 0 are one point
+    if (p.y == 0) p.y = 0;
+    if (p.z == 0) p.z = 0;
+    PointKey k;
+    std::memcpy(&k.x, &p.x, 4), std::memcpy(&k.y, &p.y, 4), std::memcpy(&k.z, &p.z, 4);
+    return k;
+}
+
+}  // namespace
+
+std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
+    // Each end (segment * 2 + side) belongs to a point; ends of a point are listed together.
+    const size_t n = segments.size();
+    std::unordered_map<PointKey, uint32_t, PointKeyHash> point_of;
+    point_of.reserve(2 * n);
+    std::vector<uint32_t> end_point(2 * n);
+    for (size_t e = 0; e < 2 * n; ++e) {
+        const glm::vec3 p = e % 2 ? segments[e / 2].b : segments[e / 2].a;
+        end_point[e] = point_of.emplace(key_of(p), uint32_t(point_of.size())).first->second;
+    }
+    std::vector<uint32_t> first(point_of.size() + 1, 0), ends(2 * n);
+    for (uint32_t p : end_point) ++first[p + 1];
+    for (size_t i = 1; i < first.size(); ++i) first[i] += first[i - 1];
+    {
+        std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+        for (size_t e = 0; e < 2 * n; ++e) ends[fill[end_point[e]]++] = uint32_t(e);
+    }
+    auto degree = [&](uint32_t p) { return first[p + 1] - first[p]; };
+    // The other end at the same point, when the point joins exactly two ends.
+    auto partner = [&](size_t e) -> long {
+        const uint32_t p = end_point[e];
+        if (degree(p) != 2) return -1;
+        const uint32_t a = ends[first[p]], b = ends[first[p] + 1];
+        return long(a == e ? b : a);
+    };
+
+    std::vector<char> used(n, 0);
+    std::vector<Polyline> out;
+    // Walks from segment s, entering at end `in`, appending points, until a path end.
+    auto walk = [&](size_t s, int in_side, Polyline& line) {
+        for (;;) {
+            used[s] = 1;
+            const LineSegment& seg = segments[s];
+            const int out_side = 1 - in_side;
+            line.points.push_back(out_side ? seg.b : seg.a);
+            line.strength.push_back(out_side ? seg.strength_b : seg.strength_a);
+            line.tolerance = std::max(line.tolerance, seg.tolerance);
+            const long next = partner(2 * s + size_t(out_side));
+            if (next < 0 || used[size_t(next) / 2]) return;
+            s = size_t(next) / 2, in_side = int(next % 2);
+        }
+    };
+    auto start_at = [&](size_t s, int in_side) {
+        Polyline line;
+        const LineSegment& seg = segments[s];
+        line.points.push_back(in_side ? seg.b : seg.a);
+        line.strength.push_back(in_side ? seg.strength_b : seg.strength_a);
+        walk(s, in_side, line);
+        out.push_back(std::move(line));
+    };
+    // Open paths first, from their ends, then what is left (closed loops).
+    for (size_t s = 0; s < n; ++s)
+        for (int side = 0; side < 2 && !used[s]; ++side)
+            if (partner(2 * s + size_t(side)) < 0) start_at(s, side);
+    for (size_t s = 0; s < n; ++s)
+        if (!used[s]) start_at(s, 0);
+    return out;
+}
+
+}  // namespace kappa

@@ -1,0 +1,153 @@
+#include "line_extraction.h"
+
+#include "geometry/creases.h"
+#include "geometry/surface_fields.h"
+#include "geometry/vertex_flags.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace kappa {
+
+namespace {
+
+// Where the linear field f crosses zero on the edge (i, j) of a triangle:
+// walked from the endpoint with the smaller vertex number (see the header).
+struct Crossing {
+    int lo, hi;  // corners of the triangle
+    float s;     // point = mix(P[lo], P[hi], s)
+};
+
+Crossing edge_zero(const Face& t, int i, int j, const float f[3]) {
+    Crossing c;
+    c.lo = t[i] < t[j] ? i : j;
+    c.hi = c.lo == i ? j : i;
+    c.s = f[c.lo] / (f[c.lo] - f[c.hi]);
+    return c;
+}
+
+// The two edges crossed by the zero set of f (values classified as f > 0 or
+// not, so there are always 0 or 2); false when there are none.
+bool find_crossings(const Face& t, const float f[3], Crossing& c0, Crossing& c1) {
+    int n = 0;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        if ((f[i] > 0.0f) != (f[j] > 0.0f)) (n == 0 ? c0 : c1) = edge_zero(t, i, j, f), ++n;
+    }
+    return n == 2;
+}
+
+float lerp_at(const Crossing& c, const float v[3]) { return v[c.lo] + (v[c.hi] - v[c.lo]) * c.s; }
+glm::vec3 point_at(const Crossing& c, const glm::vec3 p[3]) { return p[c.lo] + (p[c.hi] - p[c.lo]) * c.s; }
+
+// Clips [0, 1] to where the linear function g (g0 at 0, g1 at 1) is positive.
+bool clip_positive(float g0, float g1, glm::vec2& range) {
+    if (g0 <= 0.0f && g1 <= 0.0f) return false;
+    if (g0 > 0.0f && g1 > 0.0f) return true;
+    const float s = g0 / (g0 - g1);
+    if (g0 > 0.0f) range.y = std::min(range.y, s);
+    else range.x = std::max(range.x, s);
+    return range.x < range.y;
+}
+
+float half_longest_edge(const glm::vec3 p[3]) {
+    return 0.5f * std::max({glm::distance(p[0], p[1]), glm::distance(p[1], p[2]), glm::distance(p[2], p[0])});
+}
+
+void contour_segment(const Face& t, const glm::vec3 p[3], const ViewQuantities& q, std::vector<LineSegment>& out) {
+    const float f[3] = {q.contour_ndotv[t[0]], q.contour_ndotv[t[1]], q.contour_ndotv[t[2]]};
+    Crossing c0, c1;
+    if (!find_crossings(t, f, c0, c1)) return;
+    out.push_back({point_at(c0, p), point_at(c1, p), 1, 1, half_longest_edge(p)});
+}
+
+void suggestive_segment(const Face& t, const glm::vec3 p[3], const SurfaceFields& fields, const ViewQuantities& q,
+                        const LineExtractionOptions& o, std::vector<LineSegment>& out) {
+    if (fields.unreliable(t[0]) || fields.unreliable(t[1]) || fields.unreliable(t[2])) return;
+    const float f[3] = {q.kr[t[0]], q.kr[t[1]], q.kr[t[2]]};
+    Crossing x0, x1;
+    if (!find_crossings(t, f, x0, x1)) return;
+    const float strength[3] = {q.sc_strength[t[0]], q.sc_strength[t[1]], q.sc_strength[t[2]]};
+    const float ndotv[3] = {q.ndotv[t[0]], q.ndotv[t[1]], q.ndotv[t[2]]};
+    const float g0 = lerp_at(x0, strength) - o.sc_threshold, g1 = lerp_at(x1, strength) - o.sc_threshold;
+    glm::vec2 range(0, 1);
+    if (!clip_positive(g0, g1, range)) return;
+    if (!clip_positive(lerp_at(x0, ndotv), lerp_at(x1, ndotv), range)) return;
+    float a0 = 1, a1 = 1;
+    if (o.fade) {
+        const float ramp = std::max(o.sc_threshold, 0.05f);
+        a0 = std::clamp((g0 + (g1 - g0) * range.x) / ramp, 0.0f, 1.0f);
+        a1 = std::clamp((g0 + (g1 - g0) * range.y) / ramp, 0.0f, 1.0f);
+    }
+    if (std::max(a0, a1) <= 0.0f) return;
+    const glm::vec3 c0 = point_at(x0, p), c1 = point_at(x1, p);
+    out.push_back({c0 + (c1 - c0) * range.x, c0 + (c1 - c0) * range.y, a0, a1, half_longest_edge(p)});
+}
+
+}  // namespace
+
+const char* line_type_name(LineType type) {
+    switch (type) {
+    case LineType::Contour: return "contours";
+    case LineType::Suggestive: return "suggestive";
+    case LineType::Boundary: return "boundaries";
+    case LineType::Crease: return "creases";
+    }
+    return "";
+}
+
+std::vector<glm::uvec2> boundary_edges(const Mesh& mesh, const std::vector<uint8_t>& flags) {
+    const bool use_flags = flags.size() == mesh.positions.size();
+    if (use_flags && std::none_of(flags.begin(), flags.end(), [](uint8_t f) { return f & kFlagBoundary; }))
+        return {};
+    auto on_boundary = [&](uint32_t v) { return !use_flags || (flags[v] & kFlagBoundary); };
+    std::vector<uint64_t> keys;
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = f[k], b = f[(k + 1) % 3];
+            if (!on_boundary(a) || !on_boundary(b)) continue;
+            keys.push_back(uint64_t(std::min(a, b)) << 32 | std::max(a, b));
+        }
+    std::sort(keys.begin(), keys.end());
+    std::vector<glm::uvec2> out;
+    for (size_t i = 0; i < keys.size();) {
+        size_t j = i;
+        while (j < keys.size() && keys[j] == keys[i]) ++j;
+        if (j - i == 1) out.push_back({uint32_t(keys[i] >> 32), uint32_t(keys[i])});
+        i = j;
+    }
+    return out;
+}
+
+ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& q, glm::vec3 eye,
+                             const CreaseEdges& creases, const LineExtractionOptions& o) {
+    ExtractedLines lines;
+    auto& contours = lines[int(LineType::Contour)];
+    if (o.contours || o.suggestive)
+        for (const Face& t : mesh.faces) {
+            const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
+            if (o.contours) contour_segment(t, p, q, contours);
+            if (o.suggestive) suggestive_segment(t, p, fields, q, o, lines[int(LineType::Suggestive)]);
+        }
+    if (o.boundaries)
+        for (const glm::uvec2& e : boundary_edges(mesh, fields.flags)) {
+            const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];
+            lines[int(LineType::Boundary)].push_back({a, b, 1, 1, 0.5f * glm::distance(a, b)});
+        }
+    if (creases.edges && creases.faces && (o.creases || o.contours))
+        for (size_t i = 0; i < creases.edges->size(); ++i) {
+            const glm::uvec2 e = (*creases.edges)[i], f = (*creases.faces)[i];
+            const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];
+            const glm::vec3 na = face_normal(mesh, mesh.faces[f.x]), nb = face_normal(mesh, mesh.faces[f.y]);
+            // As crease_geom.glsl: a face is turned towards the eye when it is at either end.
+            const bool front_a = glm::dot(na, eye - a) > 0 || glm::dot(na, eye - b) > 0;
+            const bool front_b = glm::dot(nb, eye - a) > 0 || glm::dot(nb, eye - b) > 0;
+            const LineSegment s{a, b, 1, 1, 0.5f * glm::distance(a, b)};
+            if (o.creases && (front_a || front_b || o.hidden_creases)) lines[int(LineType::Crease)].push_back(s);
+            else if (o.contours && front_a != front_b) contours.push_back(s);
+        }
+    return lines;
+}
+
+}  // namespace kappa

@@ -1,0 +1,56 @@
+// PDF output of a VectorDrawing (render/vector_drawing.h), through cairo.
+#include "render/vector_drawing.h"
+
+#include <cairo-pdf.h>
+#include <cairo.h>
+
+#include <stdexcept>
+
+namespace kappa::render {
+
+void write_pdf(const std::string& path, const VectorDrawing& d) {
+    cairo_surface_t* surface = cairo_pdf_surface_create(path.c_str(), d.width, d.height);
+    cairo_t* cr = cairo_create(surface);
+    if (d.background.a > 0) {
+        cairo_set_source_rgba(cr, d.background.r, d.background.g, d.background.b, d.background.a);
+        cairo_paint(cr);
+    }
+    if (d.underlay) {
+        // cairo's ARGB32 is premultiplied, native-endian 0xAARRGGBB.
+        cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, d.width, d.height);
+        cairo_surface_flush(image);
+        unsigned char* data = cairo_image_surface_get_data(image);
+        const int stride = cairo_image_surface_get_stride(image);
+        for (int y = 0; y < d.height; ++y)
+            for (int x = 0; x < d.width; ++x) {
+                const Rgba p = d.underlay->at(x, y);
+                auto pre = [&](uint8_t c) { return uint32_t((unsigned(c) * p.a + 127) / 255); };
+                const uint32_t argb = uint32_t(p.a) << 24 | pre(p.r) << 16 | pre(p.g) << 8 | pre(p.b);
+                *reinterpret_cast<uint32_t*>(data + size_t(y) * size_t(stride) + size_t(x) * 4) = argb;
+            }
+        cairo_surface_mark_dirty(image);
+        cairo_set_source_surface(cr, image, 0, 0);
+        cairo_paint(cr);
+        cairo_surface_destroy(image);
+    }
+    cairo_set_line_width(cr, d.line_width);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (int type = 0; type < kLineTypeCount; ++type)
+        for (const Stroke& s : d.strokes) {
+            if (int(s.type) != type) continue;
+            for (const StrokePiece& piece : pieces_of_equal_opacity(s)) {
+                cairo_set_source_rgba(cr, d.line_color.r, d.line_color.g, d.line_color.b, piece.opacity);
+                cairo_move_to(cr, piece.points[0].x, piece.points[0].y);
+                for (size_t i = 1; i < piece.points.size(); ++i) cairo_line_to(cr, piece.points[i].x, piece.points[i].y);
+                cairo_stroke(cr);
+            }
+        }
+    cairo_destroy(cr);
+    cairo_surface_finish(surface);
+    const cairo_status_t status = cairo_surface_status(surface);
+    cairo_surface_destroy(surface);
+    if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(path + ": cannot write PDF (" + cairo_status_to_string(status) + ")");
+}
+
+}  // namespace kappa::render

@@ -1,0 +1,48 @@
+// A drawing made of strokes (render/strokes.h), written as SVG or PDF:
+// strokes in image pixels, one group per line type, round caps and joins,
+// fading as opacity, and optionally a raster image underneath (shading or a
+// colour map; none for pure vectors).
+#pragma once
+
+#include "render/image.h"
+#include "render/strokes.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kappa::render {
+
+struct VectorDrawing {
+    int width = 0, height = 0;          // pixels; SVG user units and PDF points are pixels
+    std::vector<Stroke> strokes;
+    float line_width = 2;               // pixels
+    glm::vec3 line_color{0, 0, 0};
+    glm::vec4 background{1, 1, 1, 1};   // straight RGBA; alpha 0: none
+    const Image* underlay = nullptr;    // drawn under the strokes when set (same size)
+};
+
+// A stroke cut into pieces of one opacity each (opacity rounded to 1/16),
+// consecutive pieces sharing their end points: SVG and PDF paths have one
+// opacity each.
+struct StrokePiece {
+    std::vector<glm::vec2> points;
+    float opacity = 1;
+};
+std::vector<StrokePiece> pieces_of_equal_opacity(const Stroke& stroke);
+
+enum class VectorFormat { Svg, Pdf };
+// From the file's extension (.svg, .pdf, any case); nullopt for anything else.
+std::optional<VectorFormat> vector_format_for(const std::string& path);
+
+// Hand-written SVG 1.1: an Inkscape layer (<g inkscape:groupmode="layer">)
+// per line type, the underlay as an embedded PNG. Throws std::runtime_error
+// "PATH: reason".
+void write_svg(const std::string& path, const VectorDrawing& drawing);
+// PDF through cairo (one page of width x height points). Throws as write_svg.
+void write_pdf(const std::string& path, const VectorDrawing& drawing);
+
+}  // namespace kappa::render
