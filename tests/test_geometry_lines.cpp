@@ -1,0 +1,112 @@
+// View-dependent line extraction on the CPU (geometry/lines): chaining, and
+// lines where the mathematics puts them: a sphere's contour circle, an open
+// square's boundary, a cube's visible edges.
+#include <catch2/catch.hpp>
+
+#include "test_shapes.h"
+
+#include "geometry/creases.h"
+#include "geometry/lines/chain.h"
+#include "geometry/lines/line_extraction.h"
+#include "geometry/primitives.h"
+#include "geometry/surface_analysis.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace kappa;
+
+namespace {
+
+LineSegment seg(glm::vec3 a, glm::vec3 b, float sa = 1, float sb = 1) { return {a, b, sa, sb, 0.1f}; }
+
+ExtractedLines lines_of(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye, LineExtractionOptions o,
+                        CreaseEdges creases = {}) {
+    const ViewQuantities q = compute_view_quantities(mesh, fields, {}, eye, 1.0f);
+    return extract_lines(mesh, fields, q, eye, creases, o);
+}
+
+}  // namespace
+
+TEST_CASE("chain_segments joins segments that share end points into paths", "[lines]") {
+    const glm::vec3 a(0, 0, 0), b(1, 0, 0), c(1, 1, 0), d(0, 1, 0), e(2, 0, 0);
+    SECTION("a square given in any order and orientation is one closed loop") {
+        const std::vector<Polyline> loop = chain_segments({seg(c, b), seg(a, b), seg(d, a), seg(c, d)});
+        REQUIRE(loop.size() == 1);
+        CHECK(loop[0].points.size() == 5);
+        CHECK(loop[0].closed());
+    }
+    SECTION("an open path comes out whole, from one end to the other, with its strengths") {
+        const std::vector<Polyline> path = chain_segments({seg(b, c, 0.5f, 0.25f), seg(b, a, 0.5f, 1.0f), seg(d, c, 0.75f, 0.25f)});
+        REQUIRE(path.size() == 1);
+        REQUIRE(path[0].points.size() == 4);
+        CHECK(!path[0].closed());
+        const bool forward = path[0].points.front() == a;
+        CHECK((forward ? path[0].points.back() : path[0].points.front()) == d);
+        std::vector<float> s = path[0].strength;
+        if (!forward) std::reverse(s.begin(), s.end());
+        CHECK(s == std::vector<float>{1.0f, 0.5f, 0.25f, 0.75f});
+    }
+    SECTION("a point where three segments meet ends three paths") {
+        CHECK(chain_segments({seg(a, b), seg(b, c), seg(b, e)}).size() == 3);
+    }
+}
+
+TEST_CASE("CPU contours of a sphere: one closed loop on the contour circle", "[lines]") {
+    const float R = 1.0f, D = 5.0f;
+    const Mesh sphere = make_icosphere(R, 4);
+    const SurfaceFields fields = compute_surface_fields(sphere);
+    const glm::vec3 eye(0, 0, D);
+    LineExtractionOptions o;
+    const ExtractedLines lines = lines_of(sphere, fields, eye, o);
+    REQUIRE(!lines[int(LineType::Contour)].empty());
+    CHECK(lines[int(LineType::Suggestive)].empty());  // kr > 0 everywhere on a sphere
+    const std::vector<Polyline> chained = chain_segments(lines[int(LineType::Contour)]);
+    REQUIRE(chained.size() == 1);
+    CHECK(chained[0].closed());
+    // n.v = 0 on a sphere seen from distance D: the circle z = R^2 / D, radius
+    // R sqrt(1 - R^2/D^2). The mesh's polygons (edges about 0.08 R at level
+    // 4) lie within h^2 / (8R) of the sphere; allow half an edge.
+    const float edge = glm::distance(sphere.positions[sphere.faces[0][0]], sphere.positions[sphere.faces[0][1]]);
+    for (const glm::vec3& p : chained[0].points) {
+        CHECK(std::fabs(p.z - R * R / D) < 0.5f * edge);
+        CHECK(std::fabs(glm::length(glm::vec2(p.x, p.y)) - R * std::sqrt(1 - R * R / (D * D))) < 0.5f * edge);
+    }
+}
+
+TEST_CASE("CPU boundaries: an open square's border is one closed loop of its four sides", "[lines]") {
+    const Mesh grid = make_grid(2.0f, 4);
+    const SurfaceFields fields = compute_surface_fields(grid);
+    LineExtractionOptions o;
+    o.contours = o.suggestive = false, o.boundaries = true;
+    const ExtractedLines lines = lines_of(grid, fields, glm::vec3(0.3f, 0.2f, 3.0f), o);
+    const auto& border = lines[int(LineType::Boundary)];
+    CHECK(border.size() == 16);  // 4 sides x 4 edges
+    const std::vector<Polyline> chained = chain_segments(border);
+    REQUIRE(chained.size() == 1);
+    CHECK(chained[0].closed());
+}
+
+TEST_CASE("CPU creases: a cube seen from a corner shows 9 edges, 6 of them on its outline", "[lines]") {
+    const SplitMesh cube = split_at_creases(test::unit_cube(), find_creases(test::unit_cube(), 40.0f));
+    const SurfaceFields fields = compute_surface_fields(cube.mesh);
+    const glm::vec3 eye(3.0f, 2.5f, 4.0f);  // sees the faces +x, +y, +z
+    LineExtractionOptions o;
+    const ExtractedLines lines = lines_of(cube.mesh, fields, eye, o, {&cube.creases, &cube.crease_faces});
+    CHECK(lines[int(LineType::Crease)].size() == 9);
+    o.creases = false;  // contours alone: the 6 edges between a face turned towards the eye and one turned away
+    const ExtractedLines outline = lines_of(cube.mesh, fields, eye, o, {&cube.creases, &cube.crease_faces});
+    size_t on_edges = 0;
+    for (const LineSegment& s : outline[int(LineType::Contour)])
+        on_edges += std::fabs(glm::distance(s.a, s.b) - 1.0f) < 1e-6f;
+    CHECK(on_edges == 6);
+    // Chained, the outline is one closed hexagon.
+    std::vector<LineSegment> hexagon;
+    for (const LineSegment& s : outline[int(LineType::Contour)])
+        if (std::fabs(glm::distance(s.a, s.b) - 1.0f) < 1e-6f) hexagon.push_back(s);
+    const std::vector<Polyline> chained = chain_segments(hexagon);
+    REQUIRE(chained.size() == 1);
+    CHECK(chained[0].points.size() == 7);
+}
