@@ -129,7 +129,7 @@ TEST_CASE("kappa render writes JPEG for .jpg and .jpeg, and refuses other extens
     const auto bmp = test::run_command(kappa_render("no-such-mesh.ply -o " + dir + "/x.bmp"));
     CHECK(bmp.exit_code == 2);
     CHECK(bmp.output.find("x.bmp") != std::string::npos);
-    CHECK(bmp.output.find(".png, .jpg or .jpeg") != std::string::npos);
+    CHECK(bmp.output.find(".png, .jpg, .jpeg, .svg or .pdf") != std::string::npos);
     CHECK(test::count_lines(bmp.output) == 1);
     const auto clear = test::run_command(kappa_render("-o " + dir + "/t.jpg --background transparent"));
     CHECK(clear.exit_code == 2);
