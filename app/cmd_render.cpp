@@ -184,6 +184,8 @@ int run_render(int argc, char** argv) {
 
         // Camera: .xf file, eye/target/up, or framing the bounding sphere.
         const render::BoundingSphere bounds = render::bounding_sphere(mesh);
+        const std::vector<CreaseEdge> crease_edges =
+            vector_format ? kappa::crease_edges(mesh, drawn.creases, drawn.crease_faces) : std::vector<CreaseEdge>{};
         const float aspect = float(size.x) / float(size.y);
         render::Camera camera;
         glm::vec3 orbit_center = bounds.center;
@@ -279,8 +281,7 @@ int run_render(int argc, char** argv) {
             const std::string path = turntable ? numbered_path(out_path, i) : out_path;
             const auto t_render = Clock::now();
             if (vector_format) {
-                const render::StrokeSource source{&mesh, view_fields, &d.fine_normals,
-                                                  {&drawn.creases, &drawn.crease_faces}, view_fs};
+                const render::StrokeSource source{&mesh, view_fields, &d.fine_normals, &crease_edges, view_fs};
                 render::write_vector_view(renderer, view, s, size.x, size.y, source, *vector_format, path);
                 if (!quiet)
                     std::printf("  wrote %s (%dx%d): render, strokes and write %.3f s\n", path.c_str(), size.x,

@@ -43,12 +43,16 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
 std::vector<glm::vec3> crease_end_points(const SplitMesh& split) {
     std::vector<glm::vec3> out;
     out.reserve(split.creases.size() * 6);
-    const Mesh& m = split.mesh;
-    for (size_t e = 0; e < split.creases.size(); ++e) {
-        const glm::vec3 na = face_normal(m, m.faces[split.crease_faces[e].x]);
-        const glm::vec3 nb = face_normal(m, m.faces[split.crease_faces[e].y]);
-        for (uint32_t v : {split.creases[e].x, split.creases[e].y}) out.insert(out.end(), {m.positions[v], na, nb});
-    }
+    for (const CreaseEdge& c : crease_edges(split.mesh, split.creases, split.crease_faces))
+        out.insert(out.end(), {c.a, c.normal_a, c.normal_b, c.b, c.normal_a, c.normal_b});
+    return out;
+}
+
+std::vector<CreaseEdge> crease_edges_of(const std::vector<glm::vec3>& end_points) {
+    std::vector<CreaseEdge> out;
+    out.reserve(end_points.size() / 6);
+    for (size_t i = 0; i + 6 <= end_points.size(); i += 6)
+        out.push_back({end_points[i], end_points[i + 3], end_points[i + 1], end_points[i + 2]});
     return out;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "geometry/creases.h"
+#include "geometry/lines/line_extraction.h"
 #include "geometry/face_clusters.h"
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
@@ -51,5 +52,7 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
 // of the split mesh, both end points, each with the unit normals of the
 // edge's two faces.
 std::vector<glm::vec3> crease_end_points(const SplitMesh& split);
+// The sharp edges back from that data (for CPU strokes, render/strokes.h).
+std::vector<CreaseEdge> crease_edges_of(const std::vector<glm::vec3>& end_points);
 
 }  // namespace kappa::render

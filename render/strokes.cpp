@@ -110,8 +110,9 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
     const ViewQuantities quantities = compute_view_quantities(
         *source.mesh, *source.fields, source.contour_normals ? *source.contour_normals : none, frame.eye,
         source.feature_size);
-    const ExtractedLines extracted =
-        extract_lines(*source.mesh, *source.fields, quantities, frame.eye, source.creases, options);
+    static const std::vector<CreaseEdge> no_creases;
+    const ExtractedLines extracted = extract_lines(*source.mesh, *source.fields, quantities, frame.eye,
+                                                   source.creases ? *source.creases : no_creases, options);
 
     const DepthTest test(depth, frame.projection);
     // As shaders/isolines_geom.glsl: with --detail, contours and suggestive

@@ -32,7 +32,7 @@ struct StrokeSource {
     const Mesh* mesh = nullptr;
     const SurfaceFields* fields = nullptr;           // with curvature
     const std::vector<glm::vec3>* contour_normals = nullptr;  // may be null or empty
-    CreaseEdges creases;
+    const std::vector<CreaseEdge>* creases = nullptr;  // may be null
     float feature_size = 1;
 };
 

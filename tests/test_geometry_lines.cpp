@@ -23,7 +23,7 @@ namespace {
 LineSegment seg(glm::vec3 a, glm::vec3 b, float sa = 1, float sb = 1) { return {a, b, sa, sb, 0.1f}; }
 
 ExtractedLines lines_of(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye, LineExtractionOptions o,
-                        CreaseEdges creases = {}) {
+                        const std::vector<CreaseEdge>& creases = {}) {
     const ViewQuantities q = compute_view_quantities(mesh, fields, {}, eye, 1.0f);
     return extract_lines(mesh, fields, q, eye, creases, o);
 }
@@ -94,10 +94,10 @@ TEST_CASE("CPU creases: a cube seen from a corner shows 9 edges, 6 of them on it
     const SurfaceFields fields = compute_surface_fields(cube.mesh);
     const glm::vec3 eye(3.0f, 2.5f, 4.0f);  // sees the faces +x, +y, +z
     LineExtractionOptions o;
-    const ExtractedLines lines = lines_of(cube.mesh, fields, eye, o, {&cube.creases, &cube.crease_faces});
+    const ExtractedLines lines = lines_of(cube.mesh, fields, eye, o, crease_edges(cube.mesh, cube.creases, cube.crease_faces));
     CHECK(lines[int(LineType::Crease)].size() == 9);
     o.creases = false;  // contours alone: the 6 edges between a face turned towards the eye and one turned away
-    const ExtractedLines outline = lines_of(cube.mesh, fields, eye, o, {&cube.creases, &cube.crease_faces});
+    const ExtractedLines outline = lines_of(cube.mesh, fields, eye, o, crease_edges(cube.mesh, cube.creases, cube.crease_faces));
     size_t on_edges = 0;
     for (const LineSegment& s : outline[int(LineType::Contour)])
         on_edges += std::fabs(glm::distance(s.a, s.b) - 1.0f) < 1e-6f;

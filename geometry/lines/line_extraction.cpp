@@ -97,6 +97,16 @@ const char* line_type_name(LineType type) {
     return "";
 }
 
+std::vector<CreaseEdge> crease_edges(const Mesh& mesh, const std::vector<glm::uvec2>& creases,
+                                     const std::vector<glm::uvec2>& crease_faces) {
+    std::vector<CreaseEdge> out;
+    out.reserve(creases.size());
+    for (size_t e = 0; e < creases.size(); ++e)
+        out.push_back({mesh.positions[creases[e].x], mesh.positions[creases[e].y],
+                       face_normal(mesh, mesh.faces[crease_faces[e].x]), face_normal(mesh, mesh.faces[crease_faces[e].y])});
+    return out;
+}
+
 std::vector<glm::uvec2> boundary_edges(const Mesh& mesh, const std::vector<uint8_t>& flags) {
     const bool use_flags = flags.size() == mesh.positions.size();
     if (use_flags && std::none_of(flags.begin(), flags.end(), [](uint8_t f) { return f & kFlagBoundary; }))
@@ -121,7 +131,7 @@ std::vector<glm::uvec2> boundary_edges(const Mesh& mesh, const std::vector<uint8
 }
 
 ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& q, glm::vec3 eye,
-                             const CreaseEdges& creases, const LineExtractionOptions& o) {
+                             const std::vector<CreaseEdge>& creases, const LineExtractionOptions& o) {
     ExtractedLines lines;
     auto& contours = lines[int(LineType::Contour)];
     if (o.contours || o.suggestive)
@@ -135,11 +145,9 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
             const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];
             lines[int(LineType::Boundary)].push_back({a, b, 1, 1, 0.5f * glm::distance(a, b)});
         }
-    if (creases.edges && creases.faces && (o.creases || o.contours))
-        for (size_t i = 0; i < creases.edges->size(); ++i) {
-            const glm::uvec2 e = (*creases.edges)[i], f = (*creases.faces)[i];
-            const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];
-            const glm::vec3 na = face_normal(mesh, mesh.faces[f.x]), nb = face_normal(mesh, mesh.faces[f.y]);
+    if (o.creases || o.contours)
+        for (const CreaseEdge& c : creases) {
+            const glm::vec3 a = c.a, b = c.b, na = c.normal_a, nb = c.normal_b;
             // As crease_geom.glsl: a face is turned towards the eye when it is at either end.
             const bool front_a = glm::dot(na, eye - a) > 0 || glm::dot(na, eye - b) > 0;
             const bool front_b = glm::dot(nb, eye - a) > 0 || glm::dot(nb, eye - b) > 0;

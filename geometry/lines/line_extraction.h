@@ -47,12 +47,14 @@ struct LineExtractionOptions {
     bool fade = true;
 };
 
-// Sharp edges of a mesh split at its creases (geometry/creases.h: SplitMesh
-// creases and crease_faces).
-struct CreaseEdges {
-    const std::vector<glm::uvec2>* edges = nullptr;  // vertex pairs
-    const std::vector<glm::uvec2>* faces = nullptr;  // the two faces along each
+// A sharp edge (geometry/creases.h) with the unit normals of its two faces.
+struct CreaseEdge {
+    glm::vec3 a, b;
+    glm::vec3 normal_a, normal_b;
 };
+// The sharp edges of a mesh split at its creases (SplitMesh creases and crease_faces).
+std::vector<CreaseEdge> crease_edges(const Mesh& mesh, const std::vector<glm::uvec2>& creases,
+                                     const std::vector<glm::uvec2>& crease_faces);
 
 using ExtractedLines = std::array<std::vector<LineSegment>, kLineTypeCount>;
 
@@ -61,7 +63,8 @@ using ExtractedLines = std::array<std::vector<LineSegment>, kLineTypeCount>;
 // (SurfaceFields::unreliable) draw no suggestive contours. Deterministic:
 // segments come in face order (edges in input order).
 ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& quantities,
-                             glm::vec3 eye, const CreaseEdges& creases, const LineExtractionOptions& options);
+                             glm::vec3 eye, const std::vector<CreaseEdge>& creases,
+                             const LineExtractionOptions& options);
 
 // Edges used by exactly one face, as vertex pairs (a < b), sorted. With flags,
 // only edges between two kFlagBoundary vertices are considered.
