@@ -39,7 +39,8 @@ void write_pdf(const std::string& path, const VectorDrawing& d) {
     for (int type = 0; type < kLineTypeCount; ++type)
         for (const Stroke& s : d.strokes) {
             if (int(s.type) != type) continue;
-            for (const StrokePiece& piece : pieces_of_equal_opacity(s)) {
+            for (const StrokePiece& piece : stroke_pieces(s, d)) {
+                cairo_set_line_width(cr, piece.width);
                 cairo_set_source_rgba(cr, d.line_color.r, d.line_color.g, d.line_color.b, piece.opacity);
                 cairo_move_to(cr, piece.points[0].x, piece.points[0].y);
                 for (size_t i = 1; i < piece.points.size(); ++i) cairo_line_to(cr, piece.points[i].x, piece.points[i].y);

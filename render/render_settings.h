@@ -66,6 +66,13 @@ struct RenderSettings {
     float hatch_stroke_length = 16.0f; // pixels
     float hatch_stroke_width = 1.25f;  // pixels
 
+    // Vector output (-o .svg/.pdf): clean-up of the strokes (render/stroke_cleanup.h, render/plotter.h).
+    float min_stroke = 0;              // pixels: visible paths shorter than this are dropped
+    float simplify = 0.25f;            // pixels: paths simplified within this distance
+    float taper = 0;                   // pixels: stroke ends thin out over this length
+    bool width_by_strength = false;    // fading shown as stroke width instead of opacity
+    bool plotter = false;              // one pen width, no overlaps, joined, ordered for pen travel
+
     glm::vec4 background{1, 1, 1, 1};  // straight RGBA; alpha 0 = transparent
     bool msaa = true;                  // 4x multisampling of the surface pass
     bool cull_clusters = true;         // skip clusters that cannot hold a line (same image; off for tests, benchmarks)

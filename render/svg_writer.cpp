@@ -84,12 +84,13 @@ void write_svg(const std::string& path, const VectorDrawing& d) {
                              name, name, hex_color(d.line_color).c_str(), double(d.line_width));
                 opened = true;
             }
-            for (const StrokePiece& piece : pieces_of_equal_opacity(s)) {
+            for (const StrokePiece& piece : stroke_pieces(s, d)) {
                 std::fputs("<path d=\"M", f);
                 for (size_t i = 0; i < piece.points.size(); ++i)
                     std::fprintf(f, "%s%.2f %.2f", i == 1 ? " L" : " ", double(piece.points[i].x),
                                  double(piece.points[i].y));
                 if (piece.opacity < 1) std::fprintf(f, "\" stroke-opacity=\"%.4g", double(piece.opacity));
+                if (piece.width != d.line_width) std::fprintf(f, "\" stroke-width=\"%.4g", double(piece.width));
                 std::fputs("\"/>\n", f);
             }
         }

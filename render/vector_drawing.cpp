@@ -2,6 +2,8 @@
 
 #include "geometry/io/output_file.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,18 +16,45 @@ std::optional<VectorFormat> vector_format_for(const std::string& path) {
     return std::nullopt;
 }
 
-std::vector<StrokePiece> pieces_of_equal_opacity(const Stroke& stroke) {
-    std::vector<StrokePiece> pieces;
-    auto level = [](float opacity) { return std::round(std::clamp(opacity, 0.0f, 1.0f) * 16.0f) / 16.0f; };
-    for (size_t i = 0; i + 1 < stroke.points.size(); ++i) {
-        // A segment takes the opacity of its middle.
-        const float o = level(0.5f * (stroke.opacity[i] + stroke.opacity[i + 1]));
-        if (pieces.empty() || pieces.back().opacity != o) {
-            pieces.push_back({{stroke.points[i]}, o});
+std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing& d) {
+    // Resample within `taper` of either end, so that the width can change there.
+    std::vector<glm::vec2> points;
+    std::vector<float> opacity, along;  // along: arc length from the start
+    float total = 0;
+    for (size_t i = 0; i + 1 < stroke.points.size(); ++i) total += glm::distance(stroke.points[i], stroke.points[i + 1]);
+    float s = 0;
+    for (size_t i = 0; i < stroke.points.size(); ++i) {
+        if (i > 0) {
+            const glm::vec2 a = stroke.points[i - 1], b = stroke.points[i];
+            const float len = glm::distance(a, b);
+            const bool in_taper = d.taper > 0 && (s < d.taper || s + len > total - d.taper);
+            const int steps = in_taper ? std::max(1, int(std::ceil(len))) : 1;
+            for (int k = 1; k < steps; ++k) {
+                const float t = float(k) / float(steps);
+                points.push_back(a + (b - a) * t);
+                opacity.push_back(stroke.opacity[i - 1] + (stroke.opacity[i] - stroke.opacity[i - 1]) * t);
+                along.push_back(s + len * t);
+            }
+            s += len;
         }
-        pieces.back().points.push_back(stroke.points[i + 1]);
+        points.push_back(stroke.points[i]), opacity.push_back(stroke.opacity[i]), along.push_back(s);
     }
-    pieces.erase(std::remove_if(pieces.begin(), pieces.end(), [](const StrokePiece& p) { return p.opacity <= 0; }),
+    auto level = [](float x) { return std::round(std::clamp(x, 0.0f, 1.0f) * 16.0f) / 16.0f; };
+    std::vector<StrokePiece> pieces;
+    for (size_t i = 0; i + 1 < points.size(); ++i) {
+        // A segment takes the style of its middle.
+        const float o = 0.5f * (opacity[i] + opacity[i + 1]);
+        const float m = 0.5f * (along[i] + along[i + 1]);
+        float w = d.taper > 0 ? std::min(1.0f, 0.2f + 0.8f * std::min(m, total - m) / d.taper) : 1.0f;
+        if (d.width_by_strength) w *= o;
+        const float piece_opacity = d.width_by_strength ? (o > 0 ? 1.0f : 0.0f) : level(o);
+        const float piece_width = d.line_width * level(w);
+        if (pieces.empty() || pieces.back().opacity != piece_opacity || pieces.back().width != piece_width)
+            pieces.push_back({{points[i]}, piece_opacity, piece_width});
+        pieces.back().points.push_back(points[i + 1]);
+    }
+    pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
+                                [](const StrokePiece& p) { return p.opacity <= 0 || p.width <= 0; }),
                  pieces.end());
     return pieces;
 }

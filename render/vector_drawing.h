@@ -23,16 +23,21 @@ struct VectorDrawing {
     glm::vec3 line_color{0, 0, 0};
     glm::vec4 background{1, 1, 1, 1};   // straight RGBA; alpha 0: none
     const Image* underlay = nullptr;    // drawn under the strokes when set (same size)
+    float taper = 0;                    // pixels: stroke ends thin out over this length (0: none)
+    bool width_by_strength = false;     // fading shown as width (full ink) instead of opacity
 };
 
-// A stroke cut into pieces of one opacity each (opacity rounded to 1/16),
-// consecutive pieces sharing their end points: SVG and PDF paths have one
-// opacity each.
+// A stroke cut into pieces of one opacity and one width each (both rounded
+// to 1/16), consecutive pieces sharing their end points: SVG and PDF paths
+// have one of each. Width: drawing.line_width times the taper (from 0.2 at a
+// path's end to 1 at `taper` pixels from it; ends are resampled every pixel
+// there) times the strength when width_by_strength.
 struct StrokePiece {
     std::vector<glm::vec2> points;
     float opacity = 1;
+    float width = 1;  // pixels
 };
-std::vector<StrokePiece> pieces_of_equal_opacity(const Stroke& stroke);
+std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing& drawing);
 
 enum class VectorFormat { Svg, Pdf };
 // From the file's extension (.svg, .pdf, any case); nullopt for anything else.

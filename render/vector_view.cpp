@@ -1,5 +1,8 @@
 #include "render/vector_view.h"
 
+#include "render/plotter.h"
+#include "render/stroke_cleanup.h"
+
 namespace kappa::render {
 
 VectorDrawing draw_vector_view(Renderer& renderer, const Camera& camera, const RenderSettings& settings, int width,
@@ -22,6 +25,14 @@ VectorDrawing draw_vector_view(Renderer& renderer, const Camera& camera, const R
     drawing.underlay = plain ? nullptr : &underlay;
     if (renderer.mesh())
         drawing.strokes = extract_strokes(source, camera, renderer.mesh()->bounds(), settings, depth);
+    simplify_strokes(drawing.strokes, settings.simplify);
+    drop_short_strokes(drawing.strokes, settings.min_stroke);
+    if (settings.plotter) {
+        drawing.strokes = plotter_paths(std::move(drawing.strokes));
+    } else {
+        drawing.taper = settings.taper;
+        drawing.width_by_strength = settings.width_by_strength;
+    }
     return drawing;
 }
 
