@@ -92,6 +92,22 @@ void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, f
     upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));
 }
 
+void MeshBuffers::read_fields(SurfaceFields& f, std::vector<glm::vec3>& fine_normals) const {
+    std::vector<GpuVertex> v(vertex_count_);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glGetBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(v.size() * sizeof(GpuVertex)), v.data());
+    const size_t n = v.size();
+    f = SurfaceFields();
+    f.normals.resize(n), f.k1.resize(n), f.k2.resize(n), f.d1.resize(n), f.d2.resize(n), f.dcurv.resize(n);
+    f.flags.resize(n), fine_normals.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        f.normals[i] = v[i].normal, f.d1[i] = v[i].d1, f.d2[i] = v[i].d2;
+        f.k1[i] = v[i].curv.x, f.k2[i] = v[i].curv.y, f.dcurv[i] = v[i].dcurv;
+        f.flags[i] = v[i].unreliable > 0 ? kFlagUnreliable : 0;
+        fine_normals[i] = v[i].fine_normal;
+    }
+}
+
 void MeshBuffers::upload(FieldUpload&& u) {
     if (u.vertices.size() != vertex_count_) throw std::invalid_argument("MeshBuffers: upload for a different mesh");
     feature_size_ = u.feature_size;

@@ -34,6 +34,10 @@ public:
     // any thread, with face_clusters()) then this, on the GL thread.
     void upload(FieldUpload&& prepared);
     const FaceClusters& face_clusters() const { return face_clusters_; }
+    // The fields on the GPU now, read back (for strokes of exactly the view
+    // drawn): normals, k1, k2, d1, d2, C, unreliable vertices as
+    // kFlagUnreliable, and the pixel-scale contour normals.
+    void read_fields(SurfaceFields& fields, std::vector<glm::vec3>& fine_normals) const;
     MeshBuffers(const MeshBuffers&) = delete;
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 

@@ -13,7 +13,7 @@
 //                                  set lines contours   set shading none   set smooth-curvature 0.01
 //   panel on|off                   show or hide the panel
 //   wait-compute                   wait until background curvature has finished
-//   screenshot PATH [panel|no-panel]
+//   screenshot PATH [panel|no-panel]   (.svg or .pdf: the drawing area as vector strokes)
 //                                  PNG of the whole window (default), or of the
 //                                  drawing alone, as `kappa render` would write it
 //   save-view PATH / load-view PATH  a trimesh2/rtsc .xf viewpoint

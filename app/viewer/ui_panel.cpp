@@ -191,6 +191,7 @@ void file_section(PanelState& panel, PanelRequests& r) {
     ImGui::SameLine();
     r.screenshot = ImGui::Button("Screenshot");
     ImGui::Checkbox("with the panel", &panel.screenshot_with_panel);
+    ImGui::TextDisabled(".png/.jpg: pixels; .svg/.pdf: the drawing as vector strokes");
     ImGui::InputText("##xf", &panel.view_path);
     ImGui::SameLine();
     r.save_view = ImGui::Button("Save");

@@ -3,7 +3,9 @@
 
 #include "app/viewer/screenshot.h"
 #include "render/camera.h"
+#include "render/field_upload.h"
 #include "render/image_writer.h"
+#include "render/vector_view.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -158,6 +160,20 @@ void ViewerApp::open_mesh(const std::string& path) {
 
 void ViewerApp::save_screenshot(const std::string& path, bool with_panel) {
     try {
+        if (const auto vector_format = render::vector_format_for(path)) {
+            // The drawing area as strokes of exactly the fields drawn (the panel is not vector art).
+            if (!model_ || !renderer_->mesh()) return report("no mesh to save yet", true);
+            const Area a = drawing_area();
+            SurfaceFields fields;
+            std::vector<glm::vec3> fine_normals;
+            renderer_->mesh()->read_fields(fields, fine_normals);
+            const std::vector<CreaseEdge> creases = render::crease_edges_of(model_->crease_points);
+            const render::StrokeSource source{model_->mesh.get(), &fields, &fine_normals, &creases,
+                                              renderer_->mesh()->feature_size()};
+            render::write_vector_view(*renderer_, camera(), state_.settings, a.pixels.x, a.pixels.y, source,
+                                      *vector_format, path);
+            return report("wrote " + path);
+        }
         // Without the panel: the drawing area, rendered as `kappa render` would.
         const Area a = drawing_area();
         const glm::ivec2 fb = window_->framebuffer_size();
