@@ -64,7 +64,8 @@ const std::vector<AppearanceSetting>& appearance_settings() {
     static const std::vector<AppearanceSetting> table = {
         {"lines", "LIST",
          "lines to draw, comma list of: contours, suggestive, boundaries, creases, ridges, valleys, parabolic, "
-         "mean-zero, isophotes, topo, silhouette (exterior contours only), none (default "
+         "mean-zero, isophotes, topo, silhouette (exterior contours only), apparent-ridges, suggestive-highlights, "
+         "principal-highlights, dwkr (Dw kr = the suggestive-contour threshold), none (default "
          "contours,suggestive,creases)",
          "a comma list of " + cli::join(render::line_names(), ", "), word(render::parse_lines, &R::lines)},
         {"detail", "PX|off",
@@ -82,12 +83,23 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"rv-threshold", "S",
          "ridges and valleys where the larger principal curvature |kmax| > S / fs, dimensionless (default 1.5)",
          range_text(0, 1e6f), number(0, 1e6f, &R::rv_threshold)},
+        {"ar-threshold", "S",
+         "apparent ridges where the view-dependent curvature > S / fs, dimensionless (default 1)",
+         range_text(0, 1e6f), number(0, 1e6f, &R::ar_threshold)},
+        {"sh-threshold", "S",
+         "suggestive highlights where -Dw kr > S / fs^2, dimensionless (default 0.1)", range_text(0, 1e6f),
+         number(0, 1e6f, &R::sh_threshold)},
+        {"ph-threshold", "S",
+         "principal highlights where (k1^2 - k2^2) n.v > S / fs^2, dimensionless (default 0.2)", range_text(0, 1e6f),
+         number(0, 1e6f, &R::ph_threshold)},
         {"isophotes", "N", "number of isophotes (lines of n.l = (k - 1/2) / N, the light as the shading's) (default 4)",
          "an integer in [1, 16]", integer(1, 16, &R::isophote_count)},
         {"topo", "N", "number of topographic lines (heights along y, evenly across the model) (default 12)",
          "an integer in [1, 1000]", integer(1, 1000, &R::topo_count)},
         {"line-width", "PX", "line width in pixels (default 2)", range_text(0.1f, 64), number(0.1f, 64, &R::line_width)},
-        {"fade", "on|off", "fade weak suggestive contours (default on)", "on or off", on_off(&R::fade)},
+        {"fade", "on|off",
+         "fade weak lines towards their threshold: suggestive contours and highlights, ridges and valleys, apparent "
+         "ridges, principal highlights (default on)", "on or off", on_off(&R::fade)},
         {"vectors", "LIST",
          "direction glyphs (at about one vertex per 600 pixels of the image), comma list of: normal, principal1, "
          "principal2, asymptotic, view, "

@@ -41,7 +41,8 @@ const std::vector<std::string>& hatching_names() {
 const std::vector<std::string>& line_names() {
     static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "creases", "ridges",
                                             "valleys",  "parabolic",  "mean-zero",  "isophotes",
-                                            "topo",     "silhouette", "none"};
+                                            "topo",     "silhouette", "apparent-ridges", "suggestive-highlights",
+                                            "principal-highlights", "dwkr", "none"};
     return n;
 }
 
@@ -69,6 +70,10 @@ std::optional<LineSelection> parse_lines(const std::string& list) {
         else if (word == "isophotes") l.isophotes = true;
         else if (word == "topo") l.topo = true;
         else if (word == "silhouette") l.silhouette = true;
+        else if (word == "apparent-ridges") l.apparent_ridges = true;
+        else if (word == "suggestive-highlights") l.suggestive_highlights = true;
+        else if (word == "principal-highlights") l.principal_highlights = true;
+        else if (word == "dwkr") l.dwkr = true;
         else if (word != "none") return std::nullopt;
         if (comma == std::string::npos) break;
         start = comma + 1;
@@ -157,6 +162,10 @@ std::string to_string(const LineSelection& l) {
     if (l.isophotes) s += std::string(s.empty() ? "" : ",") + "isophotes";
     if (l.topo) s += std::string(s.empty() ? "" : ",") + "topo";
     if (l.silhouette) s += std::string(s.empty() ? "" : ",") + "silhouette";
+    if (l.apparent_ridges) s += std::string(s.empty() ? "" : ",") + "apparent-ridges";
+    if (l.suggestive_highlights) s += std::string(s.empty() ? "" : ",") + "suggestive-highlights";
+    if (l.principal_highlights) s += std::string(s.empty() ? "" : ",") + "principal-highlights";
+    if (l.dwkr) s += std::string(s.empty() ? "" : ",") + "dwkr";
     return s.empty() ? "none" : s;
 }
 
