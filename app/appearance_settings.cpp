@@ -57,6 +57,30 @@ Set word(std::optional<T> (*parse)(const std::string&), T RenderSettings::*field
 
 std::string one_of(const std::vector<std::string>& names) { return "one of " + cli::join(names, ", "); }
 
+// A number in [lo, hi] on the command line, a slider over [slider_min, slider_max] in the panel.
+AppearanceSetting real(std::string name, std::string metavar, std::string help, float lo, float hi,
+                       float RenderSettings::*field, float slider_min, float slider_max, bool logarithmic,
+                       const char* format = "%.3f") {
+    AppearanceSetting a{std::move(name), std::move(metavar), std::move(help), range_text(lo, hi), number(lo, hi, field)};
+    a.number = field;
+    a.slider_min = slider_min;
+    a.slider_max = slider_max;
+    a.logarithmic = logarithmic;
+    a.format = format;
+    return a;
+}
+
+AppearanceSetting count(std::string name, std::string help, int lo, int hi, int RenderSettings::*field,
+                        int slider_max) {
+    AppearanceSetting a{std::move(name), "N", std::move(help),
+                        "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]",
+                        integer(lo, hi, field)};
+    a.integer = field;
+    a.slider_min = float(lo);
+    a.slider_max = float(slider_max);
+    return a;
+}
+
 }  // namespace
 
 const std::vector<AppearanceSetting>& appearance_settings() {
@@ -77,26 +101,27 @@ const std::vector<AppearanceSetting>& appearance_settings() {
          "side) and the edge drawn as a crease; auto (default): 40 on meshes made of flat and sharp pieces, off on "
          "smooth ones",
          "auto, off, or degrees in [0, 180)", word(render::parse_crease_angle, &R::crease_angle)},
-        {"sc-threshold", "S",
-         "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)",
-         range_text(0, 1e6f), number(0, 1e6f, &R::sc_threshold)},
-        {"rv-threshold", "S",
-         "ridges and valleys where the larger principal curvature |kmax| > S / fs, dimensionless (default 1.5)",
-         range_text(0, 1e6f), number(0, 1e6f, &R::rv_threshold)},
-        {"ar-threshold", "S",
-         "apparent ridges where the view-dependent curvature > S / fs, dimensionless (default 1)",
-         range_text(0, 1e6f), number(0, 1e6f, &R::ar_threshold)},
-        {"sh-threshold", "S",
-         "suggestive highlights where -Dw kr > S / fs^2, dimensionless (default 0.1)", range_text(0, 1e6f),
-         number(0, 1e6f, &R::sh_threshold)},
-        {"ph-threshold", "S",
-         "principal highlights where (k1^2 - k2^2) n.v > S / fs^2, dimensionless (default 0.2)", range_text(0, 1e6f),
-         number(0, 1e6f, &R::ph_threshold)},
-        {"isophotes", "N", "number of isophotes (lines of n.l = (k - 1/2) / N, the light as the shading's) (default 4)",
-         "an integer in [1, 16]", integer(1, 16, &R::isophote_count)},
-        {"topo", "N", "number of topographic lines (heights along y, evenly across the model) (default 12)",
-         "an integer in [1, 1000]", integer(1, 1000, &R::topo_count)},
-        {"line-width", "PX", "line width in pixels (default 2)", range_text(0.1f, 64), number(0.1f, 64, &R::line_width)},
+        real("sc-threshold", "S",
+             "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2; also the value of the "
+             "dwkr lines (default 0.05)",
+             0, 1e6f, &R::sc_threshold, 0, 2, true),
+        real("rv-threshold", "S",
+             "ridges and valleys where the larger principal curvature |kmax| > S / fs, dimensionless (default 1.5)", 0,
+             1e6f, &R::rv_threshold, 0, 10, true, "%.2f"),
+        real("ar-threshold", "S",
+             "apparent ridges where the view-dependent curvature > S / fs, dimensionless (default 1)", 0, 1e6f,
+             &R::ar_threshold, 0, 10, true, "%.2f"),
+        real("sh-threshold", "S", "suggestive highlights where -Dw kr > S / fs^2, dimensionless (default 0.1)", 0,
+             1e6f, &R::sh_threshold, 0, 2, true),
+        real("ph-threshold", "S",
+             "principal highlights where (k1^2 - k2^2) n.v > S / fs^2, dimensionless (default 0.2)", 0, 1e6f,
+             &R::ph_threshold, 0, 4, true),
+        count("isophotes", "number of isophotes (lines of n.l = (k - 1/2) / N, the light as the shading's) (default 4)",
+              1, 16, &R::isophote_count, 16),
+        count("topo", "number of topographic lines (heights along y, evenly across the model) (default 12)", 1, 1000,
+              &R::topo_count, 100),
+        real("line-width", "PX", "line width in pixels (default 2)", 0.1f, 64, &R::line_width, 0.5f, 8, false,
+             "%.1f px"),
         {"fade", "on|off",
          "fade weak lines towards their threshold: suggestive contours and highlights, ridges and valleys, apparent "
          "ridges, principal highlights (default on)", "on or off", on_off(&R::fade)},
@@ -137,13 +162,37 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"hatching", cli::join(render::hatching_names(), "|"),
          "principal-direction hatching: strokes along the min or max direction, or both (default none)",
          one_of(render::hatching_names()), word(render::parse_hatching, &R::hatching)},
-        {"hatch-spacing", "PX", "pixels between hatching strokes in the darkest tone (default 4)", range_text(2, 100),
-         number(2, 100, &R::hatch_spacing)},
+        real("hatch-spacing", "PX", "pixels between hatching strokes in the darkest tone (default 4)", 2, 100,
+             &R::hatch_spacing, 2, 30, false, "%.1f px"),
         {"background", "COLOR", "white, transparent, black or #rrggbb (default white)",
          "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)},
         {"msaa", "on|off", "4x multisampling of the surface (default on)", "on or off", on_off(&R::msaa)},
     };
     return table;
+}
+
+const std::vector<LineGroup>& line_groups() {
+    static const std::vector<LineGroup> groups = {
+        {"Contours",
+         {{"contours", "contours", ""},
+          {"silhouette", "exterior silhouette", ""},
+          {"suggestive", "suggestive", "sc-threshold"},
+          {"suggestive-highlights", "suggestive highlights", "sh-threshold"},
+          {"dwkr", "Dw kr = threshold", "sc-threshold"},
+          {"boundaries", "boundaries", ""},
+          {"creases", "creases", ""}}},
+        {"Ridges",
+         {{"ridges", "ridges", "rv-threshold"},
+          {"valleys", "valleys", "rv-threshold"},
+          {"apparent-ridges", "apparent ridges", "ar-threshold"},
+          {"principal-highlights", "principal highlights", "ph-threshold"}}},
+        {"Curvature and levels",
+         {{"parabolic", "parabolic (K = 0)", ""},
+          {"mean-zero", "H = 0", ""},
+          {"isophotes", "isophotes", "isophotes"},
+          {"topo", "topographic", "topo"}}},
+    };
+    return groups;
 }
 
 const AppearanceSetting* find_appearance_setting(const std::string& name) {

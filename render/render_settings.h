@@ -89,8 +89,15 @@ glm::vec3 unit_light_direction(const RenderSettings& settings);
 const std::vector<std::string>& shading_names();
 const std::vector<std::string>& colormap_names();
 const std::vector<std::string>& hatching_names();
-// contours, suggestive, boundaries, creases, ridges, valleys, parabolic, mean-zero, isophotes, topo,
-// silhouette, apparent-ridges, suggestive-highlights, principal-highlights, dwkr, none
+// Every line kind: its word in --lines and its flag. The one list behind
+// line_names, parse_lines and to_string (and the viewer's panel and keys).
+struct LineKind {
+    std::string name;  // "apparent-ridges"
+    bool LineSelection::*flag;
+};
+const std::vector<LineKind>& line_kinds();
+const LineKind* find_line_kind(const std::string& name);
+// The kinds' names, then none.
 const std::vector<std::string>& line_names();
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<ColorMap> parse_colormap(const std::string& s);
