@@ -37,7 +37,7 @@ struct LineSelection {
     // View-dependent lines beyond contours (shaders/isolines_geom.glsl, shaders/view_ridges_geom.glsl).
     bool apparent_ridges = false;        // Judd et al. 2007: maxima of the view-dependent curvature
     bool suggestive_highlights = false;  // zeros of kr where Dw kr < -threshold / fs^2 (DeCarlo and Rusinkiewicz 2007)
-    bool principal_highlights = false;   // where w lies along the smaller principal direction on strong ridges and valleys
+    bool principal_highlights = false;   // where w lies along the principal direction of smaller curvature on ridges and valleys
     bool dwkr = false;                   // Dw kr = the suggestive-contour threshold
     bool curvature_lines() const { return ridges || valleys || parabolic || mean_zero; }
     bool view_ridges() const { return apparent_ridges || principal_highlights; }
@@ -58,7 +58,7 @@ struct RenderSettings {
     float rv_threshold = 1.5f;         // dimensionless; ridges and valleys where |kmax| > S / fs
     float ar_threshold = 1.0f;         // dimensionless; apparent ridges where the view-dependent curvature > S / fs
     float sh_threshold = 0.1f;         // dimensionless; suggestive highlights where -Dw kr > s / fs^2
-    float ph_threshold = 0.2f;         // dimensionless; principal highlights where (k1^2 - k2^2) n.v > s / fs^2
+    float ph_threshold = 0.2f;         // dimensionless; principal highlights where (kmax^2 - kmin^2) n.v > s / fs^2
     int isophote_count = 4;            // isophotes at n.l = (k - 1/2) / N, k = 1..N
     int topo_count = 12;               // topographic lines: N heights evenly across the bounding sphere
     bool fade = true;                  // fade weak suggestive contours towards the threshold

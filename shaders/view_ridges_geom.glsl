@@ -7,11 +7,13 @@
 //     the tmax on both sides point towards the line; kept where the
 //     view-dependent curvature sqrt(q1) > threshold / fs. Near contours
 //     q1 grows without bound: there they follow the contour, as in the paper.
-//   principal highlights (DeCarlo and Rusinkiewicz 2007): v.d1 = 0 (the
-//     projected view direction along d2) where k1 >= 0 at all three vertices
-//     (ridge kind) or k1 <= 0 (valley kind), d1 turned to agree with the
-//     vertex of largest |k1| (none if one is more than 45 degrees away), kept
-//     where (k1^2 - k2^2) n.v > threshold / fs^2.
+//   principal highlights (DeCarlo and Rusinkiewicz 2007): v.dmax = 0 (the
+//     projected view direction along the principal direction of smaller
+//     curvature) where kmax, the curvature of larger magnitude (rtsc's
+//     curv1), is >= 0 at all three vertices (ridge kind) or <= 0 (valley
+//     kind), dmax turned to agree with the vertex of largest |kmax| (none if
+//     one is more than 45 degrees away), kept where
+//     (kmax^2 - kmin^2) n.v > threshold / fs^2.
 // Fading (--fade): opacity from 0 at the threshold to 1 at twice the
 // threshold, as the suggestive contours'.
 layout(triangles) in;
@@ -22,16 +24,16 @@ in ViewRidgeVertex {
     float view_curv;
     vec3 t1;
     float dq1;
-    float k1;
-    vec3 d1;
-    float v_d1;
+    float kmax;
+    vec3 dmax;
+    float v_dmax;
     float ph_strength;
     float unreliable;
 } v_in[];
 
 uniform int u_apparent_ridges, u_principal_highlights, u_fade;
 uniform float u_ar_threshold;  // dimensionless, on sqrt(q1) fs
-uniform float u_ph_threshold;  // dimensionless, on (k1^2 - k2^2) n.v fs^2
+uniform float u_ph_threshold;  // dimensionless, on (kmax^2 - kmin^2) n.v fs^2
 
 float tolerance() {
     return 0.5 * max(max(distance(v_in[0].position, v_in[1].position), distance(v_in[1].position, v_in[2].position)),
@@ -109,17 +111,17 @@ void apparent_ridges() {
 }
 
 void principal_highlights() {
-    float kmin = min(min(v_in[0].k1, v_in[1].k1), v_in[2].k1);
-    float kmax = max(max(v_in[0].k1, v_in[1].k1), v_in[2].k1);
-    if (kmin < 0.0 && kmax > 0.0) return;  // neither a ridge nor a valley kind
+    float lowest = min(min(v_in[0].kmax, v_in[1].kmax), v_in[2].kmax);
+    float highest = max(max(v_in[0].kmax, v_in[1].kmax), v_in[2].kmax);
+    if (lowest < 0.0 && highest > 0.0) return;  // neither a ridge nor a valley kind
     int ref = 0;
     for (int i = 1; i < 3; ++i)
-        if (abs(v_in[i].k1) > abs(v_in[ref].k1)) ref = i;
+        if (abs(v_in[i].kmax) > abs(v_in[ref].kmax)) ref = i;
     float f[3];
     for (int i = 0; i < 3; ++i) {
-        float flip = dot(v_in[i].d1, v_in[ref].d1) < 0.0 ? -1.0 : 1.0;
-        if (flip * dot(v_in[i].d1, v_in[ref].d1) < 0.70710678) return;  // d1 turns too fast to follow
-        f[i] = flip * v_in[i].v_d1;
+        float flip = dot(v_in[i].dmax, v_in[ref].dmax) < 0.0 ? -1.0 : 1.0;
+        if (flip * dot(v_in[i].dmax, v_in[ref].dmax) < 0.70710678) return;  // dmax turns too fast to follow
+        f[i] = flip * v_in[i].v_dmax;
     }
     // Values are classified as > 0 or not, so there are 0 or 2 crossings, also
     // where vertices lie exactly on the line (rtsc's f_i f_j <= 0 finds three

@@ -10,10 +10,10 @@ out ViewRidgeVertex {
     float view_curv;   // sqrt(q1) fs: the view-dependent curvature, dimensionless
     vec3 t1;           // its principal direction, model coordinates
     float dq1;         // D_t1 q1: zero on apparent ridges
-    float k1;          // signed larger principal curvature: > 0 on ridges, < 0 in valleys
-    vec3 d1;           // its direction
-    float v_d1;        // v.d1: zero where w lies along d2
-    float ph_strength; // (k1^2 - k2^2) n.v fs^2
+    float kmax;        // the principal curvature of larger magnitude, signed: > 0 on ridges, < 0 in valleys
+    vec3 dmax;         // its direction
+    float v_dmax;      // v.dmax: zero where w lies along the other principal direction
+    float ph_strength; // (kmax^2 - kmin^2) n.v fs^2, >= 0 where front-facing
     float unreliable;
 } v_out;
 
@@ -25,10 +25,13 @@ void main() {
     v_out.view_curv = sqrt(max(vc.q1, 0.0)) * u_feature_size;
     v_out.t1 = vc.t1.x * a_d1 + vc.t1.y * a_d2;
     v_out.dq1 = vc.dq1;
-    v_out.k1 = a_curv.x;
-    v_out.d1 = a_d1;
-    v_out.v_d1 = dot(v, a_d1);
-    v_out.ph_strength = (a_curv.x * a_curv.x - a_curv.y * a_curv.y) * dot(a_normal, v) * u_feature_size * u_feature_size;
+    // rtsc's curv1 is the curvature of larger magnitude (trimesh2's order), not kappa's k1.
+    bool first = abs(a_curv.x) >= abs(a_curv.y);
+    v_out.kmax = first ? a_curv.x : a_curv.y;
+    v_out.dmax = first ? a_d1 : a_d2;
+    v_out.v_dmax = dot(v, v_out.dmax);
+    float kmin = first ? a_curv.y : a_curv.x;
+    v_out.ph_strength = (v_out.kmax * v_out.kmax - kmin * kmin) * dot(a_normal, v) * u_feature_size * u_feature_size;
     v_out.unreliable = a_unreliable;
     gl_Position = u_mvp * vec4(a_position, 1.0);
 }
