@@ -57,6 +57,30 @@ Set word(std::optional<T> (*parse)(const std::string&), T RenderSettings::*field
 
 std::string one_of(const std::vector<std::string>& names) { return "one of " + cli::join(names, ", "); }
 
+// A number in [lo, hi] on the command line, a slider over [slider_min, slider_max] in the panel.
+AppearanceSetting real(std::string name, std::string metavar, std::string help, float lo, float hi,
+                       float RenderSettings::*field, float slider_min, float slider_max, bool logarithmic,
+                       const char* format = "%.3f") {
+    AppearanceSetting a{std::move(name), std::move(metavar), std::move(help), range_text(lo, hi), number(lo, hi, field)};
+    a.number = field;
+    a.slider_min = slider_min;
+    a.slider_max = slider_max;
+    a.logarithmic = logarithmic;
+    a.format = format;
+    return a;
+}
+
+AppearanceSetting count(std::string name, std::string help, int lo, int hi, int RenderSettings::*field,
+                        int slider_max) {
+    AppearanceSetting a{std::move(name), "N", std::move(help),
+                        "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]",
+                        integer(lo, hi, field)};
+    a.integer = field;
+    a.slider_min = float(lo);
+    a.slider_max = float(slider_max);
+    return a;
+}
+
 }  // namespace
 
 const std::vector<AppearanceSetting>& appearance_settings() {
@@ -64,7 +88,8 @@ const std::vector<AppearanceSetting>& appearance_settings() {
     static const std::vector<AppearanceSetting> table = {
         {"lines", "LIST",
          "lines to draw, comma list of: contours, suggestive, boundaries, creases, ridges, valleys, parabolic, "
-         "mean-zero, isophotes, topo, silhouette (exterior contours only), none (default "
+         "mean-zero, isophotes, topo, silhouette (exterior contours only), apparent-ridges, suggestive-highlights, "
+         "principal-highlights, dwkr (Dw kr = the suggestive-contour threshold), none (default "
          "contours,suggestive,creases)",
          "a comma list of " + cli::join(render::line_names(), ", "), word(render::parse_lines, &R::lines)},
         {"detail", "PX|off",
@@ -76,18 +101,31 @@ const std::vector<AppearanceSetting>& appearance_settings() {
          "side) and the edge drawn as a crease; auto (default): 40 on meshes made of flat and sharp pieces, off on "
          "smooth ones",
          "auto, off, or degrees in [0, 180)", word(render::parse_crease_angle, &R::crease_angle)},
-        {"sc-threshold", "S",
-         "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2 (default 0.05)",
-         range_text(0, 1e6f), number(0, 1e6f, &R::sc_threshold)},
-        {"rv-threshold", "S",
-         "ridges and valleys where the larger principal curvature |kmax| > S / fs, dimensionless (default 1.5)",
-         range_text(0, 1e6f), number(0, 1e6f, &R::rv_threshold)},
-        {"isophotes", "N", "number of isophotes (lines of n.l = (k - 1/2) / N, the light as the shading's) (default 4)",
-         "an integer in [1, 16]", integer(1, 16, &R::isophote_count)},
-        {"topo", "N", "number of topographic lines (heights along y, evenly across the model) (default 12)",
-         "an integer in [1, 1000]", integer(1, 1000, &R::topo_count)},
-        {"line-width", "PX", "line width in pixels (default 2)", range_text(0.1f, 64), number(0.1f, 64, &R::line_width)},
-        {"fade", "on|off", "fade weak suggestive contours (default on)", "on or off", on_off(&R::fade)},
+        real("sc-threshold", "S",
+             "suggestive-contour threshold s, dimensionless: drawn where Dw kr > s / fs^2; also the value of the "
+             "dwkr lines (default 0.05)",
+             0, 1e6f, &R::sc_threshold, 0, 2, true),
+        real("rv-threshold", "S",
+             "ridges and valleys where the larger principal curvature |kmax| > S / fs, dimensionless (default 1.5)", 0,
+             1e6f, &R::rv_threshold, 0, 10, true, "%.2f"),
+        real("ar-threshold", "S",
+             "apparent ridges where the view-dependent curvature > S / fs, dimensionless (default 1)", 0, 1e6f,
+             &R::ar_threshold, 0, 10, true, "%.2f"),
+        real("sh-threshold", "S", "suggestive highlights where -Dw kr > S / fs^2, dimensionless (default 0.1)", 0,
+             1e6f, &R::sh_threshold, 0, 2, true),
+        real("ph-threshold", "S",
+             "principal highlights where (kmax^2 - kmin^2) n.v > S / fs^2, kmax the curvature of larger magnitude, "
+             "dimensionless (default 0.2)", 0, 1e6f,
+             &R::ph_threshold, 0, 4, true),
+        count("isophotes", "number of isophotes (lines of n.l = (k - 1/2) / N, the light as the shading's) (default 4)",
+              1, 16, &R::isophote_count, 16),
+        count("topo", "number of topographic lines (heights along y, evenly across the model) (default 12)", 1, 1000,
+              &R::topo_count, 100),
+        real("line-width", "PX", "line width in pixels (default 2)", 0.1f, 64, &R::line_width, 0.5f, 8, false,
+             "%.1f px"),
+        {"fade", "on|off",
+         "fade weak lines towards their threshold: suggestive contours and highlights, ridges and valleys, apparent "
+         "ridges, principal highlights (default on)", "on or off", on_off(&R::fade)},
         {"vectors", "LIST",
          "direction glyphs (at about one vertex per 600 pixels of the image), comma list of: normal, principal1, "
          "principal2, asymptotic, view, "
@@ -125,14 +163,14 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"hatching", cli::join(render::hatching_names(), "|"),
          "principal-direction hatching: strokes along the min or max direction, or both (default none)",
          one_of(render::hatching_names()), word(render::parse_hatching, &R::hatching)},
-        {"hatch-spacing", "PX", "pixels between hatching strokes in the darkest tone (default 4)", range_text(2, 100),
-         number(2, 100, &R::hatch_spacing)},
-        {"min-stroke", "PX", "vector output: drop visible paths shorter than PX pixels (default 0: keep all)",
-         range_text(0, 1e6f), number(0, 1e6f, &R::min_stroke)},
-        {"simplify", "PX", "vector output: simplify paths within PX pixels (Douglas-Peucker; default 0.25, 0: off)",
-         range_text(0, 100), number(0, 100, &R::simplify)},
-        {"taper", "PX", "vector output: stroke ends thin out over PX pixels (default 0: off)", range_text(0, 1000),
-         number(0, 1000, &R::taper)},
+        real("hatch-spacing", "PX", "pixels between hatching strokes in the darkest tone (default 4)", 2, 100,
+             &R::hatch_spacing, 2, 30, false, "%.1f px"),
+        real("min-stroke", "PX", "vector output: drop visible paths shorter than PX pixels (default 0: keep all)", 0,
+             1e6f, &R::min_stroke, 0, 50, false, "%.1f px"),
+        real("simplify", "PX", "vector output: simplify paths within PX pixels (Douglas-Peucker; default 0.25, 0: off)",
+             0, 100, &R::simplify, 0, 2, false, "%.2f px"),
+        real("taper", "PX", "vector output: stroke ends thin out over PX pixels (default 0: off)", 0, 1000, &R::taper,
+             0, 50, false, "%.1f px"),
         {"width-by-strength", "on|off",
          "vector output: show fading as stroke width instead of opacity (default off)", "on or off",
          on_off(&R::width_by_strength)},
@@ -145,6 +183,30 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"msaa", "on|off", "4x multisampling of the surface (default on)", "on or off", on_off(&R::msaa)},
     };
     return table;
+}
+
+const std::vector<LineGroup>& line_groups() {
+    static const std::vector<LineGroup> groups = {
+        {"Contours",
+         {{"contours", "contours", ""},
+          {"silhouette", "exterior silhouette", ""},
+          {"suggestive", "suggestive", "sc-threshold"},
+          {"suggestive-highlights", "suggestive highlights", "sh-threshold"},
+          {"dwkr", "Dw kr = threshold", "sc-threshold"},
+          {"boundaries", "boundaries", ""},
+          {"creases", "creases", ""}}},
+        {"Ridges",
+         {{"ridges", "ridges", "rv-threshold"},
+          {"valleys", "valleys", "rv-threshold"},
+          {"apparent-ridges", "apparent ridges", "ar-threshold"},
+          {"principal-highlights", "principal highlights", "ph-threshold"}}},
+        {"Curvature and levels",
+         {{"parabolic", "parabolic (K = 0)", ""},
+          {"mean-zero", "H = 0", ""},
+          {"isophotes", "isophotes", "isophotes"},
+          {"topo", "topographic", "topo"}}},
+    };
+    return groups;
 }
 
 const AppearanceSetting* find_appearance_setting(const std::string& name) {

@@ -23,9 +23,32 @@ struct AppearanceSetting {
     std::function<bool(render::RenderSettings&, const std::string&)> set;
     // On the command line a flag without value (--colorbar); in scripts on|off.
     bool render::RenderSettings::*flag = nullptr;
+
+    // The viewer's panel (app/viewer/ui_panel.cpp): numbers are drawn there
+    // as a slider over [slider_min, slider_max] from the fields below (the
+    // command line accepts the wider range of `expects`); other settings
+    // have widgets of their own.
+    float render::RenderSettings::*number = nullptr;
+    int render::RenderSettings::*integer = nullptr;
+    float slider_min = 0, slider_max = 0;
+    bool logarithmic = false;
+    const char* format = "%.3f";
 };
 
 const std::vector<AppearanceSetting>& appearance_settings();
 const AppearanceSetting* find_appearance_setting(const std::string& name);
+
+// The line kinds of --lines as the panel shows them: in groups, each with
+// its label and the setting of its threshold or count (empty: none).
+struct LineToggle {
+    std::string kind;     // render::line_kinds() name
+    std::string label;    // "apparent ridges"
+    std::string setting;  // "ar-threshold"
+};
+struct LineGroup {
+    std::string title;
+    std::vector<LineToggle> lines;
+};
+const std::vector<LineGroup>& line_groups();
 
 }  // namespace kappa::app

@@ -8,14 +8,32 @@
 #include "commands.h"
 
 #include "app/viewer/input_script.h"
+#include "app/viewer/shortcuts.h"
 #include "app/viewer/view_state.h"
 #include "app/viewer/viewer_app.h"
 #include "render/egl_context.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace kappa::app {
+
+namespace {
+
+// The keyboard shortcuts (the help window's table), for --help.
+std::string keys_help() {
+    std::string text = "Keys:\n";
+    for (const viewer::Shortcut& k : viewer::shortcuts()) {
+        std::string name = k.name;
+        name.resize(std::max<size_t>(name.size(), 8), ' ');
+        text += "  " + name + " " + k.description + "\n";
+    }
+    return text;
+}
+
+}  // namespace
 
 int run_view(int argc, char** argv) {
     viewer::ViewerOptions o;
@@ -47,7 +65,8 @@ int run_view(int argc, char** argv) {
               "synthetic input, one step a line: frames N, drag X0 Y0 X1 Y1, scroll X Y N, key K, set NAME "
               "VALUE, screenshot PATH, ... (README, 'Viewer')", "FILE")
         .threads()
-        .epilog("Without a display (no X server) it exits with status 1: use 'kappa render' to render headless.\n"
+        .epilog(keys_help() +
+                "Without a display (no X server) it exits with status 1: use 'kappa render' to render headless.\n"
                 "Examples:\n"
                 "  kappa view bunny.ply --detail off   (the raw 1-ring lines)\n"
                 "  kappa view --shading none --lines contours,suggestive\n"

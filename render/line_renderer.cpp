@@ -25,6 +25,9 @@ LineRenderer::LineRenderer()
       curvature_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "curvature_lines_vert.glsl"}},
                         {GL_GEOMETRY_SHADER, {"line_quad.glsl", "curvature_lines_geom.glsl"}},
                         {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
+      view_ridges_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "view_curvature.glsl", "view_ridges_vert.glsl"}},
+                    {GL_GEOMETRY_SHADER, {"line_quad.glsl", "view_ridges_geom.glsl"}},
+                    {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
       level_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "level_lines_vert.glsl"}},
                     {GL_GEOMETRY_SHADER, {"line_quad.glsl", "level_lines_geom.glsl"}},
                     {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
@@ -85,20 +88,28 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
 
-    // Contours and suggestive contours: one pass over the triangles.
+    // Contours, suggestive contours, suggestive highlights and the Dw kr lines:
+    // one pass over the triangles.
     const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
-    if (contours || s.lines.suggestive) {
+    const bool highlights = s.lines.suggestive_highlights;
+    if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
         set_common(isolines_, mesh, frame, s);
         isolines_.set("u_contours", int(contours));
         isolines_.set("u_silhouette_only", int(silhouette_only));
         isolines_.set("u_suggestive", int(s.lines.suggestive));
         isolines_.set("u_sc_threshold", s.sc_threshold);
+        isolines_.set("u_highlights", int(highlights));
+        isolines_.set("u_sh_threshold", s.sh_threshold);
+        isolines_.set("u_dwkr", int(s.lines.dwkr));
         isolines_.set("u_fade", int(s.fade));
         // One pixel spans 2 w / (P[1][1] height) model units at camera distance w.
         isolines_.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
-        if (s.cull_clusters)
-            mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive,
-                                                  s.sc_threshold, 0.5f * s.line_width + 2.0f));
+        // Highlights need a zero of kr like suggestive contours, but no bound on
+        // -Dw kr holds (its cot(theta) term grows without limit): no strength
+        // test for them. The Dw kr lines can be anywhere in front.
+        if (s.cull_clusters && !s.lines.dwkr)
+            mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
+                                                  highlights ? -1e30f : s.sc_threshold, 0.5f * s.line_width + 2.0f));
         else
             mesh.draw_triangles();
     }
@@ -112,6 +123,19 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         curvature_lines_.set("u_valleys", int(s.lines.valleys));
         curvature_lines_.set("u_rv_threshold", s.rv_threshold);
         curvature_lines_.set("u_feature_size", mesh.feature_size());
+        curvature_lines_.set("u_fade", int(s.fade));
+        mesh.draw_triangles();
+    }
+    // Apparent ridges and principal highlights: every triangle (apparent
+    // ridges follow contours onto barely back-facing triangles).
+    if (s.lines.view_ridges()) {
+        set_common(view_ridges_, mesh, frame, s);
+        view_ridges_.set("u_apparent_ridges", int(s.lines.apparent_ridges));
+        view_ridges_.set("u_principal_highlights", int(s.lines.principal_highlights));
+        view_ridges_.set("u_ar_threshold", s.ar_threshold);
+        view_ridges_.set("u_ph_threshold", s.ph_threshold);
+        view_ridges_.set("u_fade", int(s.fade));
+        view_ridges_.set("u_feature_size", mesh.feature_size());
         mesh.draw_triangles();
     }
     // Isophotes (n.l levels, the light as the shading's, in model coordinates)

@@ -38,10 +38,41 @@ const std::vector<std::string>& hatching_names() {
     static const std::vector<std::string> n{"none", "min", "max", "cross"};
     return n;
 }
+const std::vector<LineKind>& line_kinds() {
+    using L = LineSelection;
+    static const std::vector<LineKind> k{
+        {"contours", &L::contours},
+        {"suggestive", &L::suggestive},
+        {"boundaries", &L::boundaries},
+        {"creases", &L::creases},
+        {"ridges", &L::ridges},
+        {"valleys", &L::valleys},
+        {"parabolic", &L::parabolic},
+        {"mean-zero", &L::mean_zero},
+        {"isophotes", &L::isophotes},
+        {"topo", &L::topo},
+        {"silhouette", &L::silhouette},
+        {"apparent-ridges", &L::apparent_ridges},
+        {"suggestive-highlights", &L::suggestive_highlights},
+        {"principal-highlights", &L::principal_highlights},
+        {"dwkr", &L::dwkr},
+    };
+    return k;
+}
+
+const LineKind* find_line_kind(const std::string& name) {
+    for (const LineKind& k : line_kinds())
+        if (k.name == name) return &k;
+    return nullptr;
+}
+
 const std::vector<std::string>& line_names() {
-    static const std::vector<std::string> n{"contours", "suggestive", "boundaries", "creases", "ridges",
-                                            "valleys",  "parabolic",  "mean-zero",  "isophotes",
-                                            "topo",     "silhouette", "none"};
+    static const std::vector<std::string> n = [] {
+        std::vector<std::string> names;
+        for (const LineKind& k : line_kinds()) names.push_back(k.name);
+        names.push_back("none");
+        return names;
+    }();
     return n;
 }
 
@@ -58,17 +89,7 @@ std::optional<LineSelection> parse_lines(const std::string& list) {
         const std::string word = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         if (std::find(seen.begin(), seen.end(), word) != seen.end()) return std::nullopt;
         seen.push_back(word);
-        if (word == "contours") l.contours = true;
-        else if (word == "suggestive") l.suggestive = true;
-        else if (word == "boundaries") l.boundaries = true;
-        else if (word == "creases") l.creases = true;
-        else if (word == "ridges") l.ridges = true;
-        else if (word == "valleys") l.valleys = true;
-        else if (word == "parabolic") l.parabolic = true;
-        else if (word == "mean-zero") l.mean_zero = true;
-        else if (word == "isophotes") l.isophotes = true;
-        else if (word == "topo") l.topo = true;
-        else if (word == "silhouette") l.silhouette = true;
+        if (const LineKind* k = find_line_kind(word)) l.*(k->flag) = true;
         else if (word != "none") return std::nullopt;
         if (comma == std::string::npos) break;
         start = comma + 1;
@@ -146,17 +167,8 @@ std::string to_string(ColorMap m) { return colormap_names()[size_t(m)]; }
 std::string to_string(Hatching h) { return hatching_names()[size_t(h)]; }
 std::string to_string(const LineSelection& l) {
     std::string s;
-    if (l.contours) s += "contours";
-    if (l.suggestive) s += std::string(s.empty() ? "" : ",") + "suggestive";
-    if (l.boundaries) s += std::string(s.empty() ? "" : ",") + "boundaries";
-    if (l.creases) s += std::string(s.empty() ? "" : ",") + "creases";
-    if (l.ridges) s += std::string(s.empty() ? "" : ",") + "ridges";
-    if (l.valleys) s += std::string(s.empty() ? "" : ",") + "valleys";
-    if (l.parabolic) s += std::string(s.empty() ? "" : ",") + "parabolic";
-    if (l.mean_zero) s += std::string(s.empty() ? "" : ",") + "mean-zero";
-    if (l.isophotes) s += std::string(s.empty() ? "" : ",") + "isophotes";
-    if (l.topo) s += std::string(s.empty() ? "" : ",") + "topo";
-    if (l.silhouette) s += std::string(s.empty() ? "" : ",") + "silhouette";
+    for (const LineKind& k : line_kinds())
+        if (l.*(k.flag)) s += (s.empty() ? "" : ",") + k.name;
     return s.empty() ? "none" : s;
 }
 

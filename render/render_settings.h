@@ -34,9 +34,16 @@ struct LineSelection {
     bool isophotes = false;   // levels of n.l (shaders/level_lines_geom.glsl)
     bool topo = false;        // levels of the height along y
     bool silhouette = false;  // the exterior silhouette only: contours that border the background
+    // View-dependent lines beyond contours (shaders/isolines_geom.glsl, shaders/view_ridges_geom.glsl).
+    bool apparent_ridges = false;        // Judd et al. 2007: maxima of the view-dependent curvature
+    bool suggestive_highlights = false;  // zeros of kr where Dw kr < -threshold / fs^2 (DeCarlo and Rusinkiewicz 2007)
+    bool principal_highlights = false;   // where w lies along the principal direction of smaller curvature on ridges and valleys
+    bool dwkr = false;                   // Dw kr = the suggestive-contour threshold
     bool curvature_lines() const { return ridges || valleys || parabolic || mean_zero; }
+    bool view_ridges() const { return apparent_ridges || principal_highlights; }
     bool any() const {
-        return contours || suggestive || boundaries || creases || curvature_lines() || isophotes || topo || silhouette;
+        return contours || suggestive || boundaries || creases || curvature_lines() || isophotes || topo || silhouette ||
+               view_ridges() || suggestive_highlights || dwkr;
     }
     // Contours are extracted for either; with silhouette alone only the exterior ones are kept.
     bool any_contours() const { return contours || silhouette; }
@@ -49,6 +56,9 @@ struct RenderSettings {
     int vectors = 0;                   // glyphs: bits of VectorGlyph (shaders/vectors_geom.glsl)
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
     float rv_threshold = 1.5f;         // dimensionless; ridges and valleys where |kmax| > S / fs
+    float ar_threshold = 1.0f;         // dimensionless; apparent ridges where the view-dependent curvature > S / fs
+    float sh_threshold = 0.1f;         // dimensionless; suggestive highlights where -Dw kr > s / fs^2
+    float ph_threshold = 0.2f;         // dimensionless; principal highlights where (kmax^2 - kmin^2) n.v > s / fs^2
     int isophote_count = 4;            // isophotes at n.l = (k - 1/2) / N, k = 1..N
     int topo_count = 12;               // topographic lines: N heights evenly across the bounding sphere
     bool fade = true;                  // fade weak suggestive contours towards the threshold
@@ -86,8 +96,15 @@ glm::vec3 unit_light_direction(const RenderSettings& settings);
 const std::vector<std::string>& shading_names();
 const std::vector<std::string>& colormap_names();
 const std::vector<std::string>& hatching_names();
-// contours, suggestive, boundaries, creases, ridges, valleys, parabolic, mean-zero, isophotes, topo,
-// silhouette, none
+// Every line kind: its word in --lines and its flag. The one list behind
+// line_names, parse_lines and to_string (and the viewer's panel and keys).
+struct LineKind {
+    std::string name;  // "apparent-ridges"
+    bool LineSelection::*flag;
+};
+const std::vector<LineKind>& line_kinds();
+const LineKind* find_line_kind(const std::string& name);
+// The kinds' names, then none.
 const std::vector<std::string>& line_names();
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<ColorMap> parse_colormap(const std::string& s);

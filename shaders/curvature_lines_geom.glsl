@@ -5,9 +5,9 @@
 //   e of the larger-magnitude principal curvature kmax along its direction
 //   crosses zero at a maximum of |kmax| (e falls along the direction where
 //   kmax > 0: a ridge; rises where kmax < 0: a valley), kept where
-//   |kmax| > threshold / fs. The principal direction has no sign: the
-//   triangle's directions (and with them e, odd in the direction) are
-//   turned to agree with its first vertex's.
+//   |kmax| > threshold / fs, faded towards it with --fade. The principal
+//   direction has no sign: the triangle's directions (and with them e, odd
+//   in the direction) are turned to agree with its first vertex's.
 // Hidden parts are removed by the same depth test as every line.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 12) out;  // three kinds of segment
@@ -22,6 +22,7 @@ in CurvatureVertex {
 uniform int u_parabolic, u_mean_zero, u_ridges, u_valleys;
 uniform float u_rv_threshold;  // dimensionless S
 uniform float u_feature_size;  // fs
+uniform int u_fade;            // fade ridges and valleys whose |kmax| is close to the threshold
 
 vec4 clip_point(int i, int j, float s) { return mix(gl_in[i].gl_Position, gl_in[j].gl_Position, s); }
 
@@ -80,9 +81,13 @@ void ridges_and_valleys() {
     float g1 = abs(mix(v_in[a1.x].kmax, v_in[a1.y].kmax, s1)) - limit;
     if (g0 <= 0.0 && g1 <= 0.0) return;
     vec4 c0 = clip_point(a0.x, a0.y, s0), c1 = clip_point(a1.x, a1.y, s1);
-    if (g0 <= 0.0) c0 = mix(c0, c1, g0 / (g0 - g1));
-    else if (g1 <= 0.0) c1 = mix(c0, c1, g0 / (g0 - g1));
-    emit_segment(c0, c1, 1.0, 1.0, tolerance());
+    if (g0 <= 0.0) c0 = mix(c0, c1, g0 / (g0 - g1)), g0 = 0.0;
+    else if (g1 <= 0.0) c1 = mix(c0, c1, g0 / (g0 - g1)), g1 = 0.0;
+    // Fading as rtsc: opacity from 0 at the threshold to 1 at twice the threshold.
+    float ramp = max(u_rv_threshold, 0.05) / u_feature_size;
+    float alpha0 = u_fade != 0 ? clamp(g0 / ramp, 0.0, 1.0) : 1.0;
+    float alpha1 = u_fade != 0 ? clamp(g1 / ramp, 0.0, 1.0) : 1.0;
+    emit_segment(c0, c1, alpha0, alpha1, tolerance());
 }
 
 void main() {

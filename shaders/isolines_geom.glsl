@@ -4,8 +4,13 @@
 //   suggestive: kr = 0, kept where Dw kr * fs^2 > threshold and n.v > 0
 //               (front-facing; conventions.md). The segment is clipped where
 //               the test fails inside it, as rtsc does.
+//   suggestive highlights (DeCarlo and Rusinkiewicz 2007): kr = 0 where
+//               -Dw kr * fs^2 > the highlight threshold and n.v > 0, the
+//               other half of the zeros of kr;
+//   dwkr:       Dw kr * fs^2 = the suggestive-contour threshold, n.v > 0
+//               (where suggestive contours begin to pass the test).
 layout(triangles) in;
-layout(triangle_strip, max_vertices = 8) out;  // contour, suggestive contour
+layout(triangle_strip, max_vertices = 16) out;  // contour, suggestive contour, highlight, dwkr
 
 in LineVertex {
     vec3 position;
@@ -22,6 +27,9 @@ uniform int u_silhouette_only;  // contours only where they border the backgroun
 uniform int u_suggestive;
 uniform float u_sc_threshold;  // dimensionless s
 uniform int u_fade;            // fade suggestive contours whose strength is close to s
+uniform int u_highlights;      // suggestive highlights
+uniform float u_sh_threshold;  // their dimensionless threshold
+uniform int u_dwkr;            // the lines Dw kr fs^2 = s
 
 // A zero crossing on an edge: the point mix(P[lo], P[hi], s). The edge is
 // always walked from the endpoint with the smaller vertex id, so the two
@@ -91,7 +99,9 @@ bool clip_positive(float g0, float g1, inout vec2 range) {
     return range.x < range.y;
 }
 
-void suggestive_segment() {
+// The zero set of kr kept where sign * Dw kr fs^2 - threshold > 0 and n.v > 0
+// (sign 1: suggestive contours, -1: suggestive highlights).
+void suggestive_segment(float sign, float threshold) {
     if (v_in[0].unreliable + v_in[1].unreliable + v_in[2].unreliable > 0.0) return;
     float f[3] = float[3](v_in[0].kr, v_in[1].kr, v_in[2].kr);
     Crossing x0, x1;
@@ -99,8 +109,8 @@ void suggestive_segment() {
     float strength[3] = float[3](v_in[0].sc_strength, v_in[1].sc_strength, v_in[2].sc_strength);
     float ndotv[3] = float[3](v_in[0].ndotv, v_in[1].ndotv, v_in[2].ndotv);
     // Test values at the two crossing points, linear along the segment.
-    float g0 = lerp_at(x0, strength) - u_sc_threshold;
-    float g1 = lerp_at(x1, strength) - u_sc_threshold;
+    float g0 = sign * lerp_at(x0, strength) - threshold;
+    float g1 = sign * lerp_at(x1, strength) - threshold;
     vec2 range = vec2(0.0, 1.0);
     if (!clip_positive(g0, g1, range)) return;
     if (!clip_positive(lerp_at(x0, ndotv), lerp_at(x1, ndotv), range)) return;
@@ -109,14 +119,30 @@ void suggestive_segment() {
     if (u_fade != 0) {
         // Opacity rises from 0 at the threshold to 1 at twice the threshold
         // (or threshold + 0.05 for small thresholds): weak lines fade out.
-        float ramp = max(u_sc_threshold, 0.05);
+        float ramp = max(threshold, 0.05);
         a0 = clamp(mix(g0, g1, range.x) / ramp, 0.0, 1.0);
         a1 = clamp(mix(g0, g1, range.y) / ramp, 0.0, 1.0);
     }
     emit_segment(mix(c0, c1, range.x), mix(c0, c1, range.y), a0, a1, triangle_tolerance());
 }
 
+// Dw kr fs^2 = s on the front-facing side, not faded (as rtsc).
+void dwkr_segment() {
+    if (v_in[0].unreliable + v_in[1].unreliable + v_in[2].unreliable > 0.0) return;
+    float f[3] = float[3](v_in[0].sc_strength - u_sc_threshold, v_in[1].sc_strength - u_sc_threshold,
+                          v_in[2].sc_strength - u_sc_threshold);
+    Crossing x0, x1;
+    if (!find_crossings(f, x0, x1)) return;
+    float ndotv[3] = float[3](v_in[0].ndotv, v_in[1].ndotv, v_in[2].ndotv);
+    vec2 range = vec2(0.0, 1.0);
+    if (!clip_positive(lerp_at(x0, ndotv), lerp_at(x1, ndotv), range)) return;
+    vec4 c0 = clip_at(x0), c1 = clip_at(x1);
+    emit_segment(mix(c0, c1, range.x), mix(c0, c1, range.y), 1.0, 1.0, triangle_tolerance());
+}
+
 void main() {
     if (u_contours != 0) contour_segment();
-    if (u_suggestive != 0) suggestive_segment();
+    if (u_suggestive != 0) suggestive_segment(1.0, u_sc_threshold);
+    if (u_highlights != 0) suggestive_segment(-1.0, u_sh_threshold);
+    if (u_dwkr != 0) dwkr_segment();
 }

@@ -9,14 +9,29 @@ namespace kappa::viewer {
 
 const std::vector<Shortcut>& shortcuts() {
     static const std::vector<Shortcut> table = {
-        {GLFW_KEY_C, 0, "C", Action::ToggleContours, "occluding contours on/off"},
-        {GLFW_KEY_S, 0, "S", Action::ToggleSuggestive, "suggestive contours on/off"},
-        {GLFW_KEY_B, 0, "B", Action::ToggleBoundaries, "boundary lines on/off"},
-        {GLFW_KEY_L, 0, "L", Action::CycleShading, "next shading: none, lambert, toon"},
+        {GLFW_KEY_C, 0, "C", Action::ToggleLine, "occluding contours on/off", "contours"},
+        {GLFW_KEY_E, 0, "E", Action::ToggleLine, "exterior silhouette on/off", "silhouette"},
+        {GLFW_KEY_S, 0, "S", Action::ToggleLine, "suggestive contours on/off", "suggestive"},
+        {GLFW_KEY_F, GLFW_MOD_CONTROL, "Ctrl+F", Action::ToggleLine, "suggestive highlights on/off",
+         "suggestive-highlights"},
+        {GLFW_KEY_W, 0, "W", Action::ToggleLine, "Dw kr = threshold lines on/off", "dwkr"},
+        {GLFW_KEY_B, 0, "B", Action::ToggleLine, "boundary lines on/off", "boundaries"},
+        {GLFW_KEY_R, GLFW_MOD_CONTROL, "Ctrl+R", Action::ToggleLine, "ridges on/off", "ridges"},
+        {GLFW_KEY_V, GLFW_MOD_CONTROL, "Ctrl+V", Action::ToggleLine, "valleys on/off", "valleys"},
+        {GLFW_KEY_A, GLFW_MOD_CONTROL, "Ctrl+A", Action::ToggleLine, "apparent ridges on/off", "apparent-ridges"},
+        {GLFW_KEY_P, GLFW_MOD_CONTROL, "Ctrl+P", Action::ToggleLine, "principal highlights on/off",
+         "principal-highlights"},
+        {GLFW_KEY_K, GLFW_MOD_CONTROL, "Ctrl+K", Action::ToggleLine, "parabolic lines (K = 0) on/off", "parabolic"},
+        {GLFW_KEY_H, GLFW_MOD_CONTROL, "Ctrl+H", Action::ToggleLine, "H = 0 lines on/off", "mean-zero"},
+        {GLFW_KEY_I, 0, "I", Action::ToggleLine, "isophotes on/off", "isophotes"},
+        {GLFW_KEY_T, 0, "T", Action::ToggleLine, "topographic lines on/off", "topo"},
+        {GLFW_KEY_D, 0, "D", Action::ToggleHiddenLines, "hidden lines (dashed) on/off"},
+        {GLFW_KEY_L, 0, "L", Action::CycleShading, "next shading: none, lambert, toon, hemisphere, toon-bw, gooch"},
+        {GLFW_KEY_L, GLFW_MOD_CONTROL, "Ctrl+L", Action::ToggleLightFrame, "light fixed to the camera or the model"},
         {GLFW_KEY_M, 0, "M", Action::CycleColorMap, "next curvature colour map"},
         {GLFW_KEY_K, 0, "K", Action::ToggleColorBar, "colour bar on/off"},
         {GLFW_KEY_H, 0, "H", Action::CycleHatching, "next hatching: none, min, max, cross"},
-        {GLFW_KEY_G, 0, "G", Action::ToggleFade, "fading of weak suggestive contours on/off"},
+        {GLFW_KEY_G, 0, "G", Action::ToggleFade, "fading of weak lines on/off"},
         {GLFW_KEY_A, 0, "A", Action::ToggleMsaa, "4x multisampling on/off"},
         {GLFW_KEY_EQUAL, 0, "=", Action::WiderLines, "wider lines"},
         {GLFW_KEY_MINUS, 0, "-", Action::ThinnerLines, "thinner lines"},
@@ -55,6 +70,12 @@ const Shortcut* find_shortcut(const std::string& name) {
     };
     for (const auto& s : shortcuts())
         if (lower(s.name) == lower(name)) return &s;
+    return nullptr;
+}
+
+const Shortcut* find_line_shortcut(const std::string& line) {
+    for (const auto& s : shortcuts())
+        if (s.line && line == s.line) return &s;
     return nullptr;
 }
 

@@ -8,7 +8,7 @@
 namespace kappa::viewer {
 
 enum class Action {
-    ToggleContours, ToggleSuggestive, ToggleBoundaries, CycleShading, CycleColorMap, ToggleColorBar,
+    ToggleLine, ToggleHiddenLines, CycleShading, ToggleLightFrame, CycleColorMap, ToggleColorBar,
     CycleHatching, ToggleFade, ToggleMsaa, WiderLines, ThinnerLines, RaiseThreshold, LowerThreshold,
     FitView, ResetView, TogglePanel, ToggleHelp, SaveScreenshot, SaveView, LoadView, Quit,
 };
@@ -19,6 +19,7 @@ struct Shortcut {
     const char* name;  // as shown in help and written in scripts: "C", "Ctrl+S", "F1"
     Action action;
     const char* description;
+    const char* line = nullptr;  // ToggleLine: the line kind (render::line_kinds())
 };
 
 const std::vector<Shortcut>& shortcuts();
@@ -28,5 +29,7 @@ const std::vector<Shortcut>& shortcuts();
 const Shortcut* find_shortcut(int key, int mods);
 // By name, case-insensitive ("c", "ctrl+s", "?"); nullptr when unknown.
 const Shortcut* find_shortcut(const std::string& name);
+// The key that toggles a line kind ("C" for contours), nullptr when none does.
+const Shortcut* find_line_shortcut(const std::string& line);
 
 }  // namespace kappa::viewer

@@ -8,7 +8,10 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace kappa::viewer {
 
@@ -39,48 +42,49 @@ void help_tooltip(const char* setting) {
         ImGui::SetTooltip("--%s: %s", a->name.c_str(), a->help.c_str());
 }
 
+// A number or count of the settings table as a slider over its panel range.
+void setting_slider(const app::AppearanceSetting& a, render::RenderSettings& s) {
+    const ImGuiSliderFlags flags = a.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+    if (a.number)
+        ImGui::SliderFloat(a.name.c_str(), &(s.*a.number), a.slider_min, a.slider_max, a.format, flags);
+    else if (a.integer)
+        ImGui::SliderInt(a.name.c_str(), &(s.*a.integer), int(a.slider_min), int(a.slider_max), "%d", flags);
+    help_tooltip(a.name.c_str());
+}
+
+void setting_slider(const char* name, render::RenderSettings& s) {
+    if (const app::AppearanceSetting* a = app::find_appearance_setting(name)) setting_slider(*a, s);
+}
+
+// The line kinds in the groups of app::line_groups(): a checkbox each (with
+// its key), then the sliders of the thresholds the lines
+// that are on use.
+void line_group(const app::LineGroup& group, render::RenderSettings& s) {
+    ImGui::TextDisabled("%s", group.title.c_str());
+    std::vector<std::string> sliders;
+    for (const app::LineToggle& t : group.lines) {
+        const render::LineKind* kind = render::find_line_kind(t.kind);
+        if (!kind) continue;
+        std::string label = t.label;
+        if (const Shortcut* key = find_line_shortcut(t.kind)) label += std::string(" (") + key->name + ")";
+        ImGui::Checkbox(label.c_str(), &(s.lines.*(kind->flag)));
+        help_tooltip(t.setting.empty() ? "lines" : t.setting.c_str());
+        if (s.lines.*(kind->flag) && !t.setting.empty() &&
+            std::find(sliders.begin(), sliders.end(), t.setting) == sliders.end())
+            sliders.push_back(t.setting);
+    }
+    for (const std::string& name : sliders) setting_slider(name.c_str(), s);
+}
+
 void lines_section(render::RenderSettings& s) {
     if (!ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    ImGui::Checkbox("contours (C)", &s.lines.contours);
-    help_tooltip("lines");
-    ImGui::Checkbox("suggestive (S)", &s.lines.suggestive);
-    help_tooltip("lines");
-    ImGui::Checkbox("boundaries (B)", &s.lines.boundaries);
-    help_tooltip("lines");
-    ImGui::Checkbox("creases", &s.lines.creases);
-    help_tooltip("crease-angle");
-    ImGui::Checkbox("ridges", &s.lines.ridges);
-    help_tooltip("rv-threshold");
-    ImGui::SameLine();
-    ImGui::Checkbox("valleys", &s.lines.valleys);
-    help_tooltip("rv-threshold");
-    ImGui::Checkbox("parabolic (K = 0)", &s.lines.parabolic);
-    help_tooltip("lines");
-    ImGui::SameLine();
-    ImGui::Checkbox("H = 0", &s.lines.mean_zero);
-    help_tooltip("lines");
-    if (s.lines.ridges || s.lines.valleys) {
-        ImGui::SliderFloat("ridge threshold", &s.rv_threshold, 0.0f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-        help_tooltip("rv-threshold");
-    }
-    ImGui::Checkbox("isophotes", &s.lines.isophotes);
-    help_tooltip("isophotes");
-    ImGui::SameLine();
-    ImGui::Checkbox("topo", &s.lines.topo);
-    help_tooltip("topo");
-    ImGui::SameLine();
-    ImGui::Checkbox("silhouette", &s.lines.silhouette);
-    help_tooltip("lines");
-    if (s.lines.isophotes) {
-        ImGui::SliderInt("isophotes##count", &s.isophote_count, 1, 16);
-        help_tooltip("isophotes");
-    }
-    if (s.lines.topo) {
-        ImGui::SliderInt("topo##count", &s.topo_count, 1, 100);
-        help_tooltip("topo");
-    }
-    ImGui::Checkbox("hidden lines, dashed", &s.hidden_lines);
+    for (const app::LineGroup& g : app::line_groups()) line_group(g, s);
+    ImGui::Separator();
+    ImGui::Checkbox("hidden lines, dashed (D)", &s.hidden_lines);
     help_tooltip("hidden-lines");
+    ImGui::SameLine();
+    ImGui::Checkbox("fade (G)", &s.fade);
+    help_tooltip("fade");
     // Direction glyphs: one checkbox a direction.
     const char* glyphs[] = {"normal", "d1", "d2", "asymptotic", "view"};
     ImGui::TextUnformatted("vectors");
@@ -90,8 +94,6 @@ void lines_section(render::RenderSettings& s) {
         if (ImGui::Checkbox(glyphs[i], &on)) s.vectors = on ? s.vectors | (1 << i) : s.vectors & ~(1 << i);
         help_tooltip("vectors");
     }
-    ImGui::SliderFloat("threshold", &s.sc_threshold, 0.0f, 2.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-    help_tooltip("sc-threshold");
     bool detail_on = s.detail > 0;
     if (ImGui::Checkbox("##detail on", &detail_on)) s.detail = detail_on ? render::RenderSettings{}.detail : 0.0f;
     help_tooltip("detail");
@@ -99,10 +101,7 @@ void lines_section(render::RenderSettings& s) {
     if (detail_on) ImGui::SliderFloat("detail", &s.detail, 1.0f, 64.0f, "%.1f px", ImGuiSliderFlags_Logarithmic);
     else ImGui::TextUnformatted("detail off");
     help_tooltip("detail");
-    ImGui::SliderFloat("line width", &s.line_width, 0.5f, 8.0f, "%.1f px");
-    help_tooltip("line-width");
-    ImGui::Checkbox("fade weak lines (G)", &s.fade);
-    help_tooltip("fade");
+    setting_slider("line-width", s);
     ImGui::ColorEdit3("line colour", &s.line_color.x, ImGuiColorEditFlags_NoInputs);
 }
 
@@ -112,6 +111,8 @@ void surface_section(render::RenderSettings& s, float map_range) {
     help_tooltip("shading");
     ImGui::SliderFloat3("light", &s.light_dir.x, -1.0f, 1.0f, "%.2f");
     help_tooltip("light");
+    ImGui::Checkbox("light turns with the model (Ctrl+L)", &s.light_on_model);
+    help_tooltip("light-frame");
     if (glm::length(s.light_dir) < 1e-3f) s.light_dir = {0, 0, 1};
     enum_combo("colour map (M)", s.colormap, render::colormap_names());
     help_tooltip("colormap");
@@ -125,10 +126,7 @@ void surface_section(render::RenderSettings& s, float map_range) {
     }
     enum_combo("hatching (H)", s.hatching, render::hatching_names());
     help_tooltip("hatching");
-    if (s.hatching != render::Hatching::None) {
-        ImGui::SliderFloat("spacing", &s.hatch_spacing, 2.0f, 30.0f, "%.1f px");
-        help_tooltip("hatch-spacing");
-    }
+    if (s.hatching != render::Hatching::None) setting_slider("hatch-spacing", s);
     ImGui::ColorEdit4("background", &s.background.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreview);
     help_tooltip("background");
     ImGui::Checkbox("4x MSAA (A)", &s.msaa);

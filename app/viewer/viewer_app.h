@@ -73,7 +73,7 @@ private:
     void mouse_button(int button, bool pressed, glm::vec2 at);
     void cursor_moved(glm::vec2 at);
     void scrolled(float clicks, glm::vec2 at);
-    void apply(Action action);
+    void apply(Action action, const char* line = nullptr);  // line: the kind ToggleLine toggles
     void open_mesh(const std::string& path);
     void save_screenshot(const std::string& path, bool with_panel);
     void save_view(const std::string& path);

@@ -48,7 +48,7 @@ struct ViewerCallbacks {
     }
     static void key(GLFWwindow* w, int key, int, int action, int mods) {
         if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) return;
-        if (const Shortcut* s = find_shortcut(key, mods)) app_of(w)->apply(s->action);
+        if (const Shortcut* s = find_shortcut(key, mods)) app_of(w)->apply(s->action, s->line);
     }
     static void drop(GLFWwindow* w, int count, const char** paths) {
         if (count > 0) app_of(w)->open_mesh(paths[0]);
@@ -100,15 +100,17 @@ void ViewerApp::scrolled(float clicks, glm::vec2 at) {
     redraw_frames_ = 2;
 }
 
-void ViewerApp::apply(Action action) {
+void ViewerApp::apply(Action action, const char* line) {
     using namespace render;
     RenderSettings& s = state_.settings;
     redraw_frames_ = 2;
     switch (action) {
-    case Action::ToggleContours: s.lines.contours = !s.lines.contours; break;
-    case Action::ToggleSuggestive: s.lines.suggestive = !s.lines.suggestive; break;
-    case Action::ToggleBoundaries: s.lines.boundaries = !s.lines.boundaries; break;
+    case Action::ToggleLine:
+        if (const LineKind* k = line ? find_line_kind(line) : nullptr) s.lines.*(k->flag) = !(s.lines.*(k->flag));
+        break;
+    case Action::ToggleHiddenLines: s.hidden_lines = !s.hidden_lines; break;
     case Action::CycleShading: s.shading = next_value(s.shading, shading_names().size()); break;
+    case Action::ToggleLightFrame: s.light_on_model = !s.light_on_model; break;
     case Action::CycleColorMap: s.colormap = next_value(s.colormap, colormap_names().size()); break;
     case Action::ToggleColorBar: s.colorbar = !s.colorbar; break;
     case Action::CycleHatching: s.hatching = next_value(s.hatching, hatching_names().size()); break;

@@ -39,7 +39,11 @@ bool ViewerApp::script_step() {
             ++step_;
             return true;
         case ScriptStep::Scroll: scrolled(s.amount, s.from); break;
-        case ScriptStep::Key: apply(find_shortcut(s.name)->action); break;
+        case ScriptStep::Key: {
+            const Shortcut* k = find_shortcut(s.name);
+            apply(k->action, k->line);
+            break;
+        }
         case ScriptStep::Set: {
             const SmoothingOptions before = state_.smoothing;
             const float crease_before = state_.settings.crease_angle;
