@@ -100,7 +100,7 @@ TEST_CASE("The analytic C truth matches the torus formula of conventions.md", "[
     }
 }
 
-TEST_CASE("Jets of degree 3 and 4 are exact on cubic height functions up to rounding", "[estimators][jet]") {
+TEST_CASE("Jets of degree 3 to 5 are exact on cubic height functions up to rounding", "[estimators][jet]") {
     // In the cubic's own frame (every normal (0, 0, 1)) the height of any
     // 2-ring is a cubic polynomial, so the fit reproduces it and the
     // read-off (gradient included) is exact. What remains is float rounding
@@ -112,7 +112,7 @@ TEST_CASE("Jets of degree 3 and 4 are exact on cubic height functions up to roun
     const AnalyticMesh a = test::analytic_cubic_patch(24, 0.5, 0.3, 0.7, 4);
     Inputs in = inputs(a.mesh);
     std::fill(in.normals.begin(), in.normals.end(), glm::vec3(0, 0, 1));
-    for (int degree : {3, 4}) {
+    for (int degree : {3, 4, 5}) {
         JetOptions o;
         o.degree = degree;
         o.rings = 2;
@@ -132,12 +132,13 @@ TEST_CASE("Jets of degree 3 and 4 are exact on cubic height functions up to roun
     CHECK(e2.curvature > 1e-2);
 }
 
-TEST_CASE("The jet converges at order 3 in curvature and 2 in C on a torus", "[estimators][jet]") {
+TEST_CASE("The degree-4 jet converges at order 3 in curvature and 2 in C on a torus", "[estimators][jet]") {
     // Cazals & Pouget 2003, Th. 3: a degree-n jet gives the k-th derivatives
-    // with error O(h^(n-k+1)): curvature (k = 2) O(h^3), C (k = 3) O(h^2).
+    // with error O(h^(n-k+1)): for n = 4, curvature (k = 2) O(h^3), C (k = 3) O(h^2).
     // Halving h should divide the errors by 8 and 4; measured 10.4 and 3.8.
     const AnalyticMesh coarse = test::analytic_torus(1, 0.4, 100, 50), fine = test::analytic_torus(1, 0.4, 200, 100);
-    JetOptions two_rings;  // the same neighbourhood at both sizes
+    JetOptions two_rings;  // the same neighbourhood and degree at both sizes
+    two_rings.degree = 4;
     two_rings.rings = 2;
     auto jet = [&](const AnalyticMesh& a) {
         const Inputs in = inputs(a.mesh);
@@ -199,14 +200,15 @@ TEST_CASE("With noise the jet grows its rings: no worse than a 3-ring jet", "[es
     const Inputs in = inputs(a.mesh);
     const EstimatorInput input{a.mesh, in.vf, in.faces, in.normals, in.areas};
     JetOptions three;
+    three.degree = 4;
     three.rings = 3;
     const Errors adaptive = errors(estimate_jet(input), a), fixed = errors(estimate_jet(input, three), a);
     INFO("adaptive " << adaptive.curvature << " / " << adaptive.dcurv << ", 3-ring " << fixed.curvature << " / "
                      << fixed.dcurv);
     CHECK(adaptive.curvature <= fixed.curvature);
     CHECK(adaptive.dcurv <= fixed.dcurv);
-    CHECK(jet_rings_for_noise(0.0f) == 2);
-    CHECK(jet_rings_for_noise(0.02f) == 5);
+    CHECK(jet_plan_for_noise(0.0f).degree == 5);
+    CHECK(jet_plan_for_noise(0.02f).rings == 5);
 }
 
 TEST_CASE("The jet's fallbacks are flagged and finite", "[estimators][jet]") {

@@ -18,14 +18,15 @@ namespace kappa {
 
 namespace {
 
-constexpr int kMaxCoefficients = 15;
+constexpr int kMaxDegree = 5;
+constexpr int kMaxCoefficients = (kMaxDegree + 1) * (kMaxDegree + 2) / 2;
 // Equilibrated pivots below this (normal_equations.h) reject a degree.
 constexpr double kPivotTolerance = 1e-11;
 // cos(5 degrees): jet normals further than this from the fitting frame's
 // axis are fitted again in their own frame.
 constexpr float kRefitCosine = 0.9962f;
 
-// Unknowns of a degree-d jet: 6, 10, 15 for d = 2, 3, 4.
+// Unknowns of a degree-d jet: 6, 10, 15, 21 for d = 2, 3, 4, 5.
 int coefficient_count(int degree) { return (degree + 1) * (degree + 2) / 2; }
 
 // Points needed to fit a degree: a few more than the unknowns, so a noisy
@@ -33,22 +34,26 @@ int coefficient_count(int degree) { return (degree + 1) * (degree + 2) / 2; }
 size_t points_needed(int degree) { return size_t(coefficient_count(degree)) + 3; }
 
 // Monomials x^kPowerX y^kPowerY: 1, x, y, x^2, xy, y^2, x^3, x^2 y, x y^2,
-// y^3, x^4, ..., y^4: ordered by degree, so the leading block of the normal
+// y^3, x^4, ..., y^4, x^5, ..., y^5: ordered by degree, so the leading block of the normal
 // equations is the lower-degree fit.
-constexpr int kPowerX[kMaxCoefficients] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0};
-constexpr int kPowerY[kMaxCoefficients] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4};
+constexpr int kPowerX[kMaxCoefficients] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0};
+constexpr int kPowerY[kMaxCoefficients] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4, 0, 1, 2, 3, 4, 5};
 
 struct VertexJet {
     glm::vec3 normal;
     Tensor2 tensor;
     glm::vec4 dcurv{0.0f};
-    bool full = false;  // the requested degree on a sufficient neighbourhood
+    bool full = false;  // degree 4 (or the degree asked for, if lower) on a sufficient neighbourhood
 };
 
 // Fits the jet of vertex v over `ring` (v first) in the frame (u, w, n) and
 // reads normal, II and C off it. Returns false when no degree >= 2 fits.
+// Top: the largest degree the normal equations are built for (a constant,
+// so the moment loops unroll); `degree` <= Top is tried first.
+template <int Top>
 bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::dvec3& n, int degree,
                 VertexJet& out) {
+    constexpr int kUnknowns = (Top + 1) * (Top + 2) / 2;
     const glm::dvec3 p0(mesh.positions[ring[0]]);
     glm::vec3 fu, fw;
     tangent_frame(glm::vec3(n), fu, fw);
@@ -61,30 +66,31 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
     if (!(scale > 0) || !std::isfinite(scale)) return false;
     scale = std::sqrt(scale);
     const double inv = 1.0 / scale;
-    // A^T A of the monomial rows holds only the 45 moments sum x^i y^j,
-    // i + j <= 8, and A^T z the 15 sums z x^i y^j, i + j <= 4: accumulating
-    // those costs a third of the row-by-row products.
-    double moment[9][9] = {}, zmoment[5][5] = {};
+    // A^T A of the monomial rows holds only the moments sum x^i y^j,
+    // i + j <= 2 degree (45 for degree 4), and A^T z the sums z x^i y^j,
+    // i + j <= degree: accumulating those costs a third of the row-by-row
+    // products.
+    double moment[2 * Top + 1][2 * Top + 1] = {}, zmoment[Top + 1][Top + 1] = {};
     for (uint32_t q : ring) {
         const glm::dvec3 d = (glm::dvec3(mesh.positions[q]) - p0) * inv;
         const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
-        double px[9], py[9];
+        double px[2 * Top + 1], py[2 * Top + 1];
         px[0] = py[0] = 1;
-        for (int i = 1; i < 9; ++i) {
+        for (int i = 1; i <= 2 * Top; ++i) {
             px[i] = px[i - 1] * x;
             py[i] = py[i - 1] * y;
         }
-        for (int i = 0; i < 9; ++i)
-            for (int j = 0; j + i < 9; ++j) moment[i][j] += px[i] * py[j];
-        for (int i = 0; i < 5; ++i)
-            for (int j = 0; j + i < 5; ++j) zmoment[i][j] += z * px[i] * py[j];
+        for (int i = 0; i <= 2 * Top; ++i)
+            for (int j = 0; j + i <= 2 * Top; ++j) moment[i][j] += px[i] * py[j];
+        for (int i = 0; i <= Top; ++i)
+            for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
     }
-    NormalEquations<kMaxCoefficients> eq;
-    for (int a = 0; a < kMaxCoefficients; ++a) {
+    NormalEquations<kUnknowns> eq;
+    for (int a = 0; a < kUnknowns; ++a) {
         eq.set_rhs(a, zmoment[kPowerX[a]][kPowerY[a]]);
-        for (int b = a; b < kMaxCoefficients; ++b) eq.set(a, b, moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
+        for (int b = a; b < kUnknowns; ++b) eq.set(a, b, moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
     }
-    double c[kMaxCoefficients];
+    double c[kUnknowns];
     int used = 0;
     for (int deg = degree; deg >= 2; --deg) {
         if (ring.size() < points_needed(deg)) continue;
@@ -123,24 +129,34 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
         if (!std::isfinite(x)) return false;
     out.tensor = {float(II[0]), float(II[1]), float(II[2])};
     out.dcurv = glm::vec4(float(C[0]), float(C[1]), float(C[2]), float(C[3]));
-    out.full = used == degree;
+    out.full = used >= std::min(degree, 4);
     return true;
+}
+
+bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::dvec3& n, int degree,
+                VertexJet& out) {
+    return degree > 4 ? fit_vertex<5>(mesh, ring, n, degree, out) : fit_vertex<4>(mesh, ring, n, degree, out);
 }
 
 }  // namespace
 
-int jet_rings_for_noise(float relative_noise) {
-    if (!(relative_noise >= 3e-4f)) return 2;
-    if (relative_noise < 2e-3f) return 3;
-    if (relative_noise < 1e-2f) return 4;
-    return 5;
+JetPlan jet_plan_for_noise(float relative_noise) {
+    if (!(relative_noise >= 3e-4f)) return {5, 3};
+    if (relative_noise < 2e-3f) return {4, 3};
+    if (relative_noise < 1e-2f) return {4, 4};
+    return {4, 5};
 }
 
 CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& options) {
     const size_t nv = in.mesh.vertex_count();
-    const int degree = std::clamp(options.degree, 2, 4);
-    const int base_rings = options.rings > 0 ? options.rings : jet_rings_for_noise(estimate_noise_level(
-                                                                   in.mesh, in.vf, in.normals).relative);
+    JetPlan plan{options.degree, options.rings};
+    if (plan.degree <= 0 || plan.rings <= 0) {
+        const JetPlan automatic = jet_plan_for_noise(estimate_noise_level(in.mesh, in.vf, in.normals).relative);
+        if (plan.degree <= 0) plan.degree = automatic.degree;
+        if (plan.rings <= 0) plan.rings = automatic.rings;
+    }
+    const int degree = std::clamp(plan.degree, 2, kMaxDegree);
+    const int base_rings = plan.rings;
     const int max_rings = std::max(base_rings, options.max_rings);
     const VertexAdjacency adj = build_vertex_adjacency(in.mesh, in.vf);
     CurvatureEstimate out;

@@ -2,36 +2,42 @@
 // differential quantities using polynomial fitting of osculating jets",
 // SGP; CGAL's Monge_via_jet_fitting).
 //
-// Per vertex: the vertex's k-ring (2-ring by default) in the frame of its
-// Max normal, centred on the vertex and scaled to unit radius; a degree-4
-// height polynomial z = sum c_ij x^i y^j (15 coefficients, constant term
-// included: the jet approximates, it does not interpolate) fitted by least
-// squares (normal_equations.h: equilibrated Cholesky in double). The
-// normal, II and C are then read off the polynomial at the origin exactly,
-// gradient included (graph_geometry.h), instead of by Cazals & Pouget's
-// change to Monge coordinates: the same quantities.
+// Per vertex: the vertex's k-ring in the frame of its Max normal, centred on
+// the vertex and scaled to unit radius; a height polynomial z = sum c_ij x^i
+// y^j of degree 4 or 5 (15 or 21 coefficients, constant term included: the
+// jet approximates, it does not interpolate) fitted by least squares
+// (normal_equations.h: equilibrated Cholesky in double, A^T A formed from
+// moments). The normal, II and C are read off the polynomial at the origin
+// exactly, gradient included (graph_geometry.h), instead of by Cazals &
+// Pouget's change to Monge coordinates: the same quantities. Where the jet's
+// normal is more than 5 degrees from the frame's axis (a poor vertex normal)
+// the fit is repeated in the jet normal's frame.
 //
-// Inputs: the mesh, its vertex-vertex adjacency and the Max normals (they
-// give the fitting frame only). Outputs (estimate.h): the jet's normal, II
-// and C per vertex, all three native.
+// Inputs: the mesh, its vertex faces and the Max normals (they give the
+// fitting frame only). Outputs (estimate.h): the jet's normal, II and C per
+// vertex, all three native.
 //
-// Where the neighbourhood is too small for a degree-4 fit (fewer than 18
-// points: boundaries, small components) it is grown by one ring, up to
+// Degree and rings (JetOptions 0 = automatic) follow the mesh's noise level
+// eta relative to the median edge (scale/noise_level.h, itself a cubic-jet
+// residual), jet_plan_for_noise: clean (eta < 0.03%): degree 5 on the 3-ring;
+// eta < 0.2%: degree 4 on the 3-ring; < 1%: degree 4 on the 4-ring; else
+// degree 4 on the 5-ring. The error is truncation (a degree-n jet: curvature
+// O(h^(n-1)), C O(h^(n-2)); Cazals & Pouget 2003, Th. 3) plus noise
+// amplification, which falls fast with the ring. Measured on an irregular
+// 20k-vertex torus (R 1, r 0.4; tests/test_geometry_estimators.cpp and the
+// accuracy lab): clean curvature error 0.021% (degree 4, 2-ring), 0.0088%
+// (degree 5, 3-ring), 0.029% (degree 4, 3-ring), 0.049% (4-ring), 0.094%
+// (5-ring); per unit eta of noise 77, 22, 18, 8.6, 4.7. The thresholds are
+// near where the sums cross, kept clear of the noise estimate's floor on
+// clean meshes (about 1e-4).
+//
+// Where the neighbourhood is too small for the degree (fewer than unknowns +
+// 3 points: boundaries, small components) it is grown by one ring, up to
 // `max_rings`; if that is not enough, or the points are degenerate (the
-// equilibrated normal equations are singular), the degree drops to 3, then
-// 2 (C = 0), then to a zero estimate, and the vertex gets kFlagFallback.
-// Isolated vertices get the zero estimate and the flag.
-//
-// Noise: the jet's error is truncation (clean meshes: O(h^3) for curvature,
-// O(h^2) for C, smallest on the 2-ring) plus noise amplification (largest on
-// the 2-ring: 15 unknowns from about 19 points). With `rings` = 0 (the
-// default) the ring count follows the mesh's noise level eta, relative to
-// the median edge (scale/noise_level.h, itself a cubic-jet residual):
-// 2 rings below eta = 0.03%, 3 below 0.2%, 4 below 1%, else 5. Measured on
-// a torus (R 1, r 0.4, 20k vertices, irregular), curvature error per unit
-// eta: 77 (2 rings), 20 (3), 8.6 (4), 4.7 (5), against clean errors of
-// 0.019%, 0.026%, 0.049%, 0.094%: the thresholds are where the sums cross,
-// moved up to stay clear of the estimator's floor on clean meshes.
+// equilibrated normal equations are singular), the degree drops, down to 2
+// (C = 0) and then to a zero estimate. A degree below 4 (or below the one
+// asked for, if lower) and the zero estimate set kFlagFallback. Isolated
+// vertices get the zero estimate and the flag.
 //
 // Each vertex is computed independently by one thread: results do not
 // depend on the thread count.
@@ -42,7 +48,7 @@
 namespace kappa {
 
 struct JetOptions {
-    int degree = 4;      // 2, 3 or 4
+    int degree = 0;      // 2 to 5; 0: from the noise level
     int rings = 0;       // neighbourhood size before any growth; 0: from the noise level
     int max_rings = 4;   // growth limit for small neighbourhoods
     bool refit = true;   // fit again in the jet normal's frame when it is more than 5 degrees off
@@ -50,7 +56,10 @@ struct JetOptions {
 
 CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& options = {});
 
-// The ring count for a relative noise level (above).
-int jet_rings_for_noise(float relative_noise);
+struct JetPlan {
+    int degree, rings;
+};
+// Degree and rings for a relative noise level (above).
+JetPlan jet_plan_for_noise(float relative_noise);
 
 }  // namespace kappa
