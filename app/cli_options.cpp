@@ -251,6 +251,16 @@ Parser& Parser::threads() {
 }
 
 Parser& Parser::smoothing(SmoothingOptions& out) {
+    option(
+        "--estimator", "NAME",
+        "curvature estimator: " + join(estimator_names(), ", ") +
+            " (default rusinkiewicz; README, 'Curvature estimators')",
+        [&out](const std::string& value) {
+            const auto e = parse_estimator(value);
+            if (e) out.estimator = *e;
+            return e.has_value();
+        },
+        "one of " + join(estimator_names(), ", "));
     return option(
                "--smooth", "auto|off",
                "auto: estimate the mesh's noise level and choose the smoothing widths from it (widths given "

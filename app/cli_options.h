@@ -107,7 +107,8 @@ public:
     // --threads N: worker threads for the computation (0 = all cores); calls
     // kappa::set_thread_count while parsing.
     Parser& threads();
-    // --smooth auto|off (SmoothingOptions::automatic) and --smooth-normals,
+    // --estimator NAME (SmoothingOptions::estimator), --smooth auto|off
+    // (SmoothingOptions::automatic) and --smooth-normals,
     // --smooth-curvature, --smooth-dcurv: Gaussian widths (sigma, model
     // units) passed to the curvature engine; 0 = off, or chosen with auto.
     Parser& smoothing(SmoothingOptions& out);

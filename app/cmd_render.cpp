@@ -107,7 +107,8 @@ int run_render(int argc, char** argv) {
         .flag("-q,--quiet", quiet, "print nothing but errors")
         .threads()
         .epilog("With --shading none --colormap none the surface is white and only lines are dark.\n"
-                "Lines follow the surface at the --detail scale; explicit --smooth-* widths override it.\n"
+                "Lines follow the surface at the --detail scale; explicit --smooth-* widths and an --estimator\n"
+                "other than rusinkiewicz override it (the raw per-vertex fields are drawn).\n"
                 "--sc-threshold is divided by the square of the mesh's feature size fs (printed by 'kappa info'),\n"
                 "so the same value means the same on every mesh.\n"
                 "Examples:\n"
@@ -163,7 +164,11 @@ int run_render(int argc, char** argv) {
         const double load_s = seconds_since(t_load);
 
         // Explicit smoothing widths override the detail setting (README, "kappa render").
-        if (p.seen("--smooth-normals") || p.seen("--smooth-curvature") || p.seen("--smooth-dcurv")) s.detail = 0;
+        // So does an estimator other than the default: the scale space is built on the paper's fits,
+        // so the chosen estimator's own per-vertex fields are drawn.
+        if (p.seen("--smooth-normals") || p.seen("--smooth-curvature") || p.seen("--smooth-dcurv") ||
+            smoothing.estimator != Estimator::rusinkiewicz)
+            s.detail = 0;
         // With detail, the per-vertex curvature is needed only where a view
         // blends in the raw estimate (zoomed in on a coarse mesh): computed then.
         ProgressBar bar(!quiet && mesh.face_count() >= 200000);

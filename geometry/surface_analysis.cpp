@@ -1,6 +1,7 @@
 #include "surface_analysis.h"
 
 #include "curvature.h"
+#include "curvature/estimate.h"
 #include "dcurvature.h"
 #include "face_geometry.h"
 #include "normals.h"
@@ -9,6 +10,10 @@
 #include "vertex_faces.h"
 #include "vertex_flags.h"
 #include "voronoi_areas.h"
+
+#include "parallel.h"
+
+#include <glm/geometric.hpp>
 
 #include <chrono>
 
@@ -31,6 +36,58 @@ private:
 }  // namespace
 
 namespace {
+
+// The stages from curvature on for every estimator but the default
+// (geometry/curvature/estimate.h): the estimator's tensors (and normals),
+// optional tensor smoothing, diagonalisation, C (the estimator's, or the
+// paper's C step on its tensors), optional C smoothing.
+template <typename Report>
+void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces, const SmoothingOptions& smoothing,
+                    StageTimes& t, const Report& report, SurfaceFields& out) {
+    report(0.35f, "curvature");
+    CurvatureEstimate e;
+    {
+        StageTimer timer(&t.curvature);
+        e = estimate_curvature(smoothing.estimator, {mesh, vf, faces, out.normals, out.point_areas});
+        if (!e.normals.empty()) out.normals = std::move(e.normals);
+        for (size_t v = 0; v < e.flags.size(); ++v) out.flags[v] |= e.flags[v];
+    }
+    if (smoothing.curvature > 0) {
+        report(0.5f, "smoothing curvature");
+        StageTimer timer(&t.smoothing);
+        smooth_curvature_tensors({mesh, vf, out.point_areas, out.normals}, smoothing.curvature, e.tensors);
+    }
+    {
+        StageTimer timer(&t.curvature);
+        principal_curvatures(e.tensors, out.normals, out.k1, out.k2, out.d1, out.d2);
+    }
+    report(0.65f, "derivative of curvature");
+    {
+        StageTimer timer(&t.dcurv);
+        if (e.dcurv_uv.empty()) {
+            // The paper's C step (sec. 3.4) on the estimator's tensors; it
+            // needs the face frames of the paper's curvature step.
+            FaceFits fits;
+            compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
+            out.dcurv = compute_dcurv(mesh, vf, fits, faces.corner_areas, out.normals, e.tensors, out.d1);
+        } else {
+            out.dcurv.resize(out.normals.size());
+            parallel_for(out.normals.size(), [&](size_t v) {
+                glm::vec3 u, w;
+                tangent_frame(out.normals[v], u, w);
+                // (d1, d2) = (c u - s w, s u + c w), as in compute_dcurv.
+                const float c = glm::dot(out.d1[v], u), s = -glm::dot(out.d1[v], w);
+                out.dcurv[v] = transform_dcurv(FrameChange{c, -s, s, c}, e.dcurv_uv[v]);
+            });
+        }
+    }
+    if (smoothing.dcurv > 0) {
+        report(0.8f, "smoothing derivative");
+        StageTimer timer(&t.smoothing);
+        smooth_dcurv({mesh, vf, out.point_areas, out.normals}, smoothing.dcurv, out.d1, out.d2, out.dcurv);
+    }
+    report(1.0f, "done");
+}
 
 SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, StageTimes* times,
                       const ProgressFn& progress, bool curvature) {
@@ -84,6 +141,11 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
         if (n == glm::vec3(0.0f)) n = glm::vec3(0, 0, 1);
     if (!curvature) {
         report(1.0f, "done");
+        return out;
+    }
+
+    if (smoothing.estimator != Estimator::rusinkiewicz) {
+        estimate_other(mesh, vf, faces, smoothing, t, report, out);
         return out;
     }
 

@@ -4,6 +4,7 @@
 // c=C122, d=C222). All arrays have one entry per input vertex.
 #pragma once
 
+#include "curvature/estimator.h"
 #include "scale/noise_level.h"
 #include "vertex_flags.h"
 
@@ -15,12 +16,14 @@
 
 namespace kappa {
 
-// Gaussian smoothing widths (sigma) in model units; 0 disables a stage.
+// How compute_surface_fields estimates: the estimator, and Gaussian
+// smoothing widths (sigma) in model units; 0 disables a stage.
 struct SmoothingOptions {
     float normals = 0;       // smooth normals before curvature is estimated
     float curvature = 0;     // smooth the curvature tensor
     float dcurv = 0;         // smooth the derivative-of-curvature tensor
     bool automatic = false;  // choose the widths left at 0 from the mesh's noise level
+    Estimator estimator = Estimator::rusinkiewicz;  // geometry/curvature/estimator.h
 };
 
 struct SurfaceFields {

@@ -11,10 +11,13 @@ enum VertexFlag : uint8_t {
     kFlagDegenerate  = 1 << 1,  // every incident face has zero area
     kFlagBoundary    = 1 << 2,  // on an open boundary (one-sided neighbourhood)
     kFlagNonManifold = 1 << 3,  // on an edge shared by more than two faces
+    kFlagFallback    = 1 << 4,  // the chosen estimator could not fit its full model here (a lower
+                                // degree, or a zero estimate): geometry/curvature/estimate.h
 };
 
 // Bits that make a curvature estimate unreliable (everything above).
-constexpr uint8_t kFlagUnreliable = kFlagIsolated | kFlagDegenerate | kFlagBoundary | kFlagNonManifold;
+constexpr uint8_t kFlagUnreliable =
+    kFlagIsolated | kFlagDegenerate | kFlagBoundary | kFlagNonManifold | kFlagFallback;
 
 }  // namespace kappa
 

@@ -119,6 +119,12 @@ TEST_CASE("kappa curvature reports bad input on one line with a non-zero exit", 
         CHECK(r.output.find("out.csv") != std::string::npos);
         CHECK(r.output.find("no such folder") != std::string::npos);  // not the missing mesh
     }
+    SECTION("unknown estimator, with the valid names") {
+        const auto r = run_command(kExe + " curvature -o " + dir + "/out.csv --estimator jets");
+        CHECK(r.exit_code == 2);
+        CHECK(count_lines(r.output) == 1);
+        CHECK(r.output.find("points-normals-fit") != std::string::npos);
+    }
     SECTION("negative smoothing width") {
         const auto r = run_command(kExe + " curvature -o " + dir + "/out.csv --smooth-normals -1");
         CHECK(r.exit_code == 2);
@@ -129,7 +135,8 @@ TEST_CASE("kappa curvature --help documents the columns and options", "[cli][cur
     const auto r = run_command(kExe + " curvature --help");
     CHECK(r.exit_code == 0);
     for (const char* s : {"x,y,z,nx,ny,nz,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,a,b,c,d", "--smooth-normals",
-                          "--smooth-curvature", "--smooth-dcurv", "--format", "--threads", "-o"})
+                          "--smooth-curvature", "--smooth-dcurv", "--format", "--threads", "-o", "--estimator",
+                          "rusinkiewicz", "tensor-averaging", "normal-fit", "points-normals-fit"})
         CHECK(r.output.find(s) != std::string::npos);
 }
 
@@ -149,4 +156,23 @@ TEST_CASE("kappa curvature of a mesh with no faces says nothing could be estimat
     CHECK(csv.find("-0,") == std::string::npos);
     CHECK(csv.find("-0\n") == std::string::npos);
     CHECK(count_lines(csv) == 4);  // header and three rows
+}
+
+TEST_CASE("kappa curvature --estimator: the default is rusinkiewicz, every other one writes its own values",
+          "[cli][curvature][estimators]") {
+    const std::string dir = kappa::test::temp_dir();
+    REQUIRE(run_command(kExe + " curvature -q -o " + dir + "/default.csv").exit_code == 0);
+    const std::string def = kappa::test::read_file(dir + "/default.csv");
+    REQUIRE(run_command(kExe + " curvature -q --estimator rusinkiewicz -o " + dir + "/r.csv").exit_code == 0);
+    CHECK(kappa::test::read_file(dir + "/r.csv") == def);
+    for (const char* name : {"jet", "tensor-averaging", "normal-fit", "points-normals-fit"}) {
+        INFO(name);
+        const std::string path = dir + "/" + name + ".csv";
+        REQUIRE(run_command(kExe + " curvature -q --estimator " + name + " -o " + path).exit_code == 0);
+        const std::string out = kappa::test::read_file(path);
+        CHECK(count_lines(out) == count_lines(def));
+        CHECK(out != def);
+        CHECK(out.find("nan") == std::string::npos);
+        CHECK(out.find("inf") == std::string::npos);
+    }
 }

@@ -44,15 +44,28 @@ void require_frame_invariants(const SurfaceFields& s) {
     }
 }
 
+// Smoothing options with every estimator (geometry/curvature/estimator.h):
+// each must pass what the default passes.
+std::vector<SmoothingOptions> with_each_estimator(SmoothingOptions o = {}) {
+    std::vector<SmoothingOptions> out;
+    for (const std::string& name : estimator_names()) {
+        o.estimator = *parse_estimator(name);
+        out.push_back(o);
+    }
+    return out;
+}
+
 }  // namespace
 
 TEST_CASE("Principal frames obey the conventions on curved meshes", "[robustness]") {
     for (const Mesh& m : {make_torus(1.0f, 0.35f, 48, 20), make_ellipsoid(1.5f, 1.0f, 0.6f, 4),
-                          make_jittered_sphere(1.0f, 3, 0.9f, 5)}) {
-        const SurfaceFields s = compute_surface_fields(m);
-        require_all_finite(s);
-        require_frame_invariants(s);
-    }
+                          make_jittered_sphere(1.0f, 3, 0.9f, 5)})
+        for (const SmoothingOptions& o : with_each_estimator()) {
+            INFO(estimator_name(o.estimator));
+            const SurfaceFields s = compute_surface_fields(m, o);
+            require_all_finite(s);
+            require_frame_invariants(s);
+        }
 }
 
 TEST_CASE("Degenerate faces, isolated vertices, non-manifold edges and holes stay finite and are flagged",
@@ -75,19 +88,25 @@ TEST_CASE("Degenerate faces, isolated vertices, non-manifold edges and holes sta
     m.positions.push_back({0.1f, 0.1f, 0.7f});
     m.faces.push_back({30, 31, nv + 5});
 
-    require_all_finite(compute_surface_fields(m, {0.3f, 0.3f, 0.3f}));
-    const SurfaceFields s = compute_surface_fields(m);
-    require_all_finite(s);
-    CHECK(s.flags[isolated] & kFlagIsolated);
-    CHECK(s.flags[nv] & kFlagDegenerate);  // only used by the collinear face
-    CHECK(s.flags[nv + 1] & kFlagDegenerate);
-    CHECK(s.flags[30] & kFlagNonManifold);
-    CHECK(s.flags[31] & kFlagNonManifold);
-    CHECK(s.flags[0] & kFlagBoundary);  // grid corner
-    CHECK(s.flags[70] == 0);           // interior vertex away from the damage
-    CHECK(s.k1[70] == Approx(0.0f).margin(1e-6));  // a plane has no curvature
-    CHECK(s.k2[70] == Approx(0.0f).margin(1e-6));
-    CHECK(std::isfinite(feature_size(m, s)));
+    for (const SmoothingOptions& o : with_each_estimator({0.3f, 0.3f, 0.3f})) {
+        INFO(estimator_name(o.estimator) << ", smoothed");
+        require_all_finite(compute_surface_fields(m, o));
+    }
+    for (const SmoothingOptions& o : with_each_estimator()) {
+        INFO(estimator_name(o.estimator));
+        const SurfaceFields s = compute_surface_fields(m, o);
+        require_all_finite(s);
+        CHECK(s.flags[isolated] & kFlagIsolated);
+        CHECK(s.flags[nv] & kFlagDegenerate);  // only used by the collinear face
+        CHECK(s.flags[nv + 1] & kFlagDegenerate);
+        CHECK(s.flags[30] & kFlagNonManifold);
+        CHECK(s.flags[31] & kFlagNonManifold);
+        CHECK(s.flags[0] & kFlagBoundary);  // grid corner
+        CHECK(s.flags[70] == 0);           // interior vertex away from the damage
+        CHECK(s.k1[70] == Approx(0.0f).margin(1e-6));  // a plane has no curvature
+        CHECK(s.k2[70] == Approx(0.0f).margin(1e-6));
+        CHECK(std::isfinite(feature_size(m, s)));
+    }
 }
 
 TEST_CASE("Random garbage meshes never produce NaN or inf", "[robustness]") {
@@ -99,18 +118,24 @@ TEST_CASE("Random garbage meshes never produce NaN or inf", "[robustness]") {
         for (int i = 0; i < nv; ++i) m.positions.push_back(glm::vec3(coord(rng), coord(rng), coord(rng)) * 0.5f);
         std::uniform_int_distribution<uint32_t> vid(0, nv - 1);
         for (int i = 0; i < nf; ++i) m.faces.push_back({vid(rng), vid(rng), vid(rng)});
-        const SurfaceFields s = compute_surface_fields(m, {trial % 2 ? 0.5f : 0.0f, 0.4f, 0.4f});
-        require_all_finite(s);
-        CHECK(std::isfinite(feature_size(m, s)));
+        for (const SmoothingOptions& o : with_each_estimator({trial % 2 ? 0.5f : 0.0f, 0.4f, 0.4f})) {
+            INFO(estimator_name(o.estimator) << ", trial " << trial);
+            const SurfaceFields s = compute_surface_fields(m, o);
+            require_all_finite(s);
+            CHECK(std::isfinite(feature_size(m, s)));
+        }
     }
     // Empty mesh and vertices without faces.
-    Mesh empty;
-    CHECK(compute_surface_fields(empty).size() == 0);
-    Mesh points;
-    points.positions = {{0, 0, 0}, {1, 2, 3}};
-    const SurfaceFields s = compute_surface_fields(points);
-    require_all_finite(s);
-    CHECK(s.flags[0] == kFlagIsolated);
+    for (const SmoothingOptions& o : with_each_estimator()) {
+        INFO(estimator_name(o.estimator));
+        Mesh empty;
+        CHECK(compute_surface_fields(empty, o).size() == 0);
+        Mesh points;
+        points.positions = {{0, 0, 0}, {1, 2, 3}};
+        const SurfaceFields s = compute_surface_fields(points, o);
+        require_all_finite(s);
+        CHECK((s.flags[0] & kFlagIsolated));
+    }
 }
 
 namespace {
@@ -124,21 +149,23 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 
 TEST_CASE("Results are bit-identical whatever the thread count", "[determinism]") {
     const Mesh m = make_jittered_sphere(1.0f, 6, 0.9f, 9);  // 40k vertices: several chunks per thread
-    const SmoothingOptions smooth{0.02f, 0.03f, 0.03f};
-    set_thread_count(1);
-    const SurfaceFields one = compute_surface_fields(m, smooth);
-    set_thread_count(2);
-    const SurfaceFields two = compute_surface_fields(m, smooth);
-    set_thread_count(5);
-    const SurfaceFields five = compute_surface_fields(m, smooth);
-    set_thread_count(0);
-    for (const SurfaceFields* other : {&two, &five}) {
-        CHECK(same_bits(one.normals, other->normals));
-        CHECK(same_bits(one.k1, other->k1));
-        CHECK(same_bits(one.k2, other->k2));
-        CHECK(same_bits(one.d1, other->d1));
-        CHECK(same_bits(one.d2, other->d2));
-        CHECK(same_bits(one.dcurv, other->dcurv));
-        CHECK(same_bits(one.flags, other->flags));
+    for (const SmoothingOptions& smooth : with_each_estimator({0.02f, 0.03f, 0.03f})) {
+        INFO(estimator_name(smooth.estimator));
+        set_thread_count(1);
+        const SurfaceFields one = compute_surface_fields(m, smooth);
+        set_thread_count(2);
+        const SurfaceFields two = compute_surface_fields(m, smooth);
+        set_thread_count(5);
+        const SurfaceFields five = compute_surface_fields(m, smooth);
+        set_thread_count(0);
+        for (const SurfaceFields* other : {&two, &five}) {
+            CHECK(same_bits(one.normals, other->normals));
+            CHECK(same_bits(one.k1, other->k1));
+            CHECK(same_bits(one.k2, other->k2));
+            CHECK(same_bits(one.d1, other->d1));
+            CHECK(same_bits(one.d2, other->d2));
+            CHECK(same_bits(one.dcurv, other->dcurv));
+            CHECK(same_bits(one.flags, other->flags));
+        }
     }
 }

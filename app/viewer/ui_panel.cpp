@@ -144,6 +144,14 @@ bool smoothing_section(SmoothingOptions& sm, const Model* model, bool computing,
         if (ImGui::SliderFloat(label, &in_fs, 0.0f, 2.0f, in_fs > 0 ? "%.3f fs" : "off")) sigma = in_fs * fs;
         recompute |= ImGui::IsItemDeactivatedAfterEdit();
     };
+    if (ImGui::BeginCombo("estimator", estimator_name(sm.estimator).c_str())) {
+        for (size_t i = 0; i < estimator_names().size(); ++i)
+            if (ImGui::Selectable(estimator_names()[i].c_str(), size_t(sm.estimator) == i)) {
+                recompute |= sm.estimator != Estimator(i);
+                sm.estimator = Estimator(i);
+            }
+        ImGui::EndCombo();
+    }
     // auto: widths left at 0 are chosen from the mesh's noise level (README, "kappa curvature").
     if (ImGui::Checkbox("auto (from the noise level)", &sm.automatic)) recompute = true;
     width("normals", sm.normals);

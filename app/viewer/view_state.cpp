@@ -40,6 +40,11 @@ const std::map<std::string, Setter>& setters() {
                         s.smoothing.automatic = v == "auto";
                         return true;
                     }}},
+        {"estimator", {"one of " + cli::join(estimator_names(), ", "), [](ViewState& s, const std::string& v) {
+                           const auto e = parse_estimator(v);
+                           if (e) s.smoothing.estimator = *e;
+                           return e.has_value();
+                       }}},
         {"smooth-normals", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.normals; })},
         {"smooth-curvature", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.curvature; })},
         {"smooth-dcurv", number(0, 1e30f, [](ViewState& s) -> auto& { return s.smoothing.dcurv; })},

@@ -19,7 +19,7 @@ struct ViewState {
 // The names `kappa render` gives these settings on its command line, without
 // the dashes: lines, shading, light, colormap, colorbar, hatching,
 // hatch-spacing, sc-threshold, line-width, fade, background, msaa,
-// smooth-normals, smooth-curvature, smooth-dcurv.
+// estimator, smooth-normals, smooth-curvature, smooth-dcurv.
 const std::vector<std::string>& setting_names();
 
 // Sets one of them from its command-line text ("lines" "contours,boundaries",

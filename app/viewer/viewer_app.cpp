@@ -183,7 +183,9 @@ void ViewerApp::adopt_results() {
 
 float ViewerApp::effective_detail() const {
     const SmoothingOptions& w = state_.smoothing;
-    return w.normals > 0 || w.curvature > 0 || w.dcurv > 0 ? 0.0f : state_.settings.detail;
+    // As in `kappa render`: explicit widths, or another estimator than the default, draw the raw fields.
+    const bool raw = w.normals > 0 || w.curvature > 0 || w.dcurv > 0 || w.estimator != Estimator::rusinkiewicz;
+    return raw ? 0.0f : state_.settings.detail;
 }
 
 // The fields follow the view's scale: after a zoom (pixel size at the pivot

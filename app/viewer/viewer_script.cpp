@@ -9,7 +9,8 @@ namespace kappa::viewer {
 namespace {
 
 bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b) {
-    return a.normals == b.normals && a.curvature == b.curvature && a.dcurv == b.dcurv && a.automatic == b.automatic;
+    return a.normals == b.normals && a.curvature == b.curvature && a.dcurv == b.dcurv && a.automatic == b.automatic &&
+           a.estimator == b.estimator;
 }
 
 }  // namespace

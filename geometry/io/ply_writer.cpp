@@ -31,7 +31,9 @@ std::string smoothing_comment(const SurfaceFields& fields) {
                       fields.noise.relative, fields.noise.median_edge);
         out += line;
     }
-    return out + "\n";
+    out += "\n";
+    if (s.estimator != Estimator::rusinkiewicz) out += "comment estimator " + estimator_name(s.estimator) + "\n";
+    return out;
 }
 
 std::string ply_header(const Mesh& mesh, const SurfaceFields& fields, bool binary) {
