@@ -36,10 +36,7 @@ LineRenderer::LineRenderer()
                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
       creases_({{GL_VERTEX_SHADER, {"crease_vert.glsl"}},
                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "crease_geom.glsl"}},
-                {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}),
-      hatching_({{GL_VERTEX_SHADER, {"hatch_vert.glsl"}},
-                 {GL_GEOMETRY_SHADER, {"line_quad.glsl", "hatch_geom.glsl"}},
-                 {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {}
+                {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {}
 
 void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                               const RenderSettings& s) {
@@ -52,30 +49,6 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
     p.set("u_depth", 0);
     p.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
     p.set("u_hidden_lines", int(s.hidden_lines));
-}
-
-// Hatching strokes grow from surface samples (shaders/hatch_vert.glsl). The
-// most strokes per unit of surface area are wanted where the surface is
-// nearest, faces the camera and is darkest: at depth `near` (no visible
-// point is nearer), cos(theta) = 1 and darkness 1. Samples beyond that
-// count can pass nowhere in the view and are not drawn.
-void LineRenderer::draw_hatching(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
-    const glm::mat4& P = frame.projection;
-    const float near_plane = P[3][2] / (P[2][2] - 1.0f);
-    const double pixels_per_unit = double(P[1][1]) * 0.5 * double(frame.viewport.y);
-    const double strokes_per_area = mesh.surface_area() / (double(s.hatch_spacing) * double(s.hatch_stroke_length));
-    const double most_wanted = std::pow(pixels_per_unit / double(near_plane), 2) * strokes_per_area;
-    const size_t count = size_t(std::min(std::ceil(most_wanted), double(mesh.hatch_sample_count())));
-
-    set_common(hatching_, mesh, frame, s);
-    hatching_.set("u_normal_matrix", frame.normal_matrix);
-    hatching_.set("u_light", camera_light_direction(s, frame));
-    hatching_.set("u_pixels_per_unit", float(pixels_per_unit));
-    hatching_.set("u_strokes_per_area", float(strokes_per_area));
-    hatching_.set("u_stroke_length", s.hatch_stroke_length);
-    hatching_.set("u_stroke_width", s.hatch_stroke_width);
-    hatching_.set("u_hatching", int(s.hatching));
-    mesh.draw_hatch_samples(count);
 }
 
 void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
@@ -179,7 +152,6 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         set_common(boundaries_, mesh, frame, s);
         mesh.draw_boundary_edges();
     }
-    if (s.hatching != Hatching::None) draw_hatching(mesh, frame, s);
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);

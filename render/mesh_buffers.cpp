@@ -120,6 +120,9 @@ void MeshBuffers::upload(FieldUpload&& u) {
         hatch_samples_ = u.samples.size() / 3;
         glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
         glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.samples.size() * sizeof(glm::vec3)), u.samples.data());
+        hatch_seeds_.clear();
+        for (size_t i = 0; i < std::min(hatch_samples_, kStreamlineSeeds); ++i)
+            hatch_seeds_.push_back({u.samples[3 * i], u.samples[3 * i + 1]});
     }
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }

@@ -58,6 +58,13 @@ public:
     size_t face_count() const { return face_count_; }
     size_t boundary_edge_count() const { return boundary_edges_; }
     size_t hatch_sample_count() const { return hatch_samples_; }
+    // The first surface samples on the CPU (position, normal): the seeds of
+    // streamline hatching (render/hatch_streamlines.h), in their random order.
+    struct Seed {
+        glm::vec3 position, normal;
+    };
+    static constexpr size_t kStreamlineSeeds = 32768;
+    const std::vector<Seed>& hatch_seeds() const { return hatch_seeds_; }
     double surface_area() const { return surface_area_; }
     float feature_size() const { return feature_size_; }
     const BoundingSphere& bounds() const { return bounds_; }
@@ -73,6 +80,7 @@ private:
     GLuint crease_vao_ = 0, crease_buffer_ = 0;
     size_t creases_ = 0;
     size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0, hatch_samples_ = 0;
+    std::vector<Seed> hatch_seeds_;
     double surface_area_ = 0;
     float feature_size_ = 1;
     BoundingSphere bounds_;

@@ -1,6 +1,11 @@
 #include "render/renderer.h"
 
 #include "render/frame_params.h"
+#include "render/hatch_streamlines.h"
+
+#include <glm/geometric.hpp>
+
+#include <iterator>
 
 namespace kappa::render {
 
@@ -54,12 +59,16 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
         surface_pass_.draw(*mesh_, frame, s);
     }
     if (s.msaa) resolve(surface_ms_fb_, surface_fb_);
+    const std::vector<Stroke> hatching = mesh_ && s.hatching != Hatching::None ? hatch_strokes(frame, s)
+                                                                              : std::vector<Stroke>{};
+    glViewport(0, 0, w, h);
 
     // 2. Lines as coverage, occlusion-tested against the surface depth.
     glBindFramebuffer(GL_FRAMEBUFFER, lines_fb_.id());
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (mesh_ && (s.lines.any() || s.hatching != Hatching::None || s.vectors != 0)) line_pass_.draw(*mesh_, frame, s, surface_fb_.depth_texture());
+    if (mesh_ && (s.lines.any() || s.vectors != 0)) line_pass_.draw(*mesh_, frame, s, surface_fb_.depth_texture());
+    stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
 
     // 3. Composite into the target, then the colour bar on top.
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
@@ -67,6 +76,42 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     compositor_.draw(surface_fb_.color_texture(), lines_fb_.color_texture(), s.line_color);
     if (mesh_ && s.colorbar) colorbar_.draw(s.colormap, mesh_->map_range(s.colormap), w, h, s.background);
     glBindVertexArray(0);
+}
+
+std::vector<Stroke> Renderer::hatch_strokes(const Camera& camera, const RenderSettings& s, int width, int height) {
+    if (!mesh_ || s.hatching == Hatching::None) return {};
+    return hatch_strokes(FrameParams::make(camera, mesh_->bounds(), width, height), s);
+}
+
+std::vector<Stroke> Renderer::hatch_strokes(const FrameParams& frame, const RenderSettings& s) {
+    HatchParams params;
+    params.spacing = s.hatch_spacing;
+    std::vector<Stroke> strokes;
+    // Max: along d1; min: along d2; cross: d1, then d2 in the darker tones.
+    for (int family = 0; family < (s.hatching == Hatching::Cross ? 2 : 1); ++family) {
+        const int direction = s.hatching == Hatching::Min || family == 1 ? 2 : 1;
+        const HatchField field = hatch_field_.draw(*mesh_, frame, s, direction);
+        params.cross_family = family == 1;
+        // Seeds: surface samples turned towards the eye and not hidden, in their fixed order.
+        std::vector<glm::vec2> seeds;
+        for (const MeshBuffers::Seed& seed : mesh_->hatch_seeds()) {
+            if (glm::dot(seed.normal, frame.eye - seed.position) <= 0) continue;
+            const glm::vec4 c = frame.mvp * glm::vec4(seed.position, 1.0f);
+            if (c.w <= 0) continue;
+            const glm::vec3 ndc = glm::vec3(c) / c.w;
+            const glm::vec2 p = (glm::vec2(ndc) * 0.5f + 0.5f) * frame.viewport;
+            if (p.x < 0 || p.y < 0 || p.x >= frame.viewport.x || p.y >= frame.viewport.y) continue;
+            const float drawn = field.depth[size_t(p.y) * size_t(field.width) + size_t(p.x)];
+            const float drawn_distance = field.p32 / (drawn * 2.0f - 1.0f + field.p22);
+            if (c.w > drawn_distance * 1.01f) continue;
+            seeds.push_back(p);
+        }
+        std::vector<Stroke> family_strokes = trace_hatching(field, seeds, params);
+        for (Stroke& st : family_strokes) st.width = s.hatch_stroke_width;
+        strokes.insert(strokes.end(), std::make_move_iterator(family_strokes.begin()),
+                       std::make_move_iterator(family_strokes.end()));
+    }
+    return strokes;
 }
 
 Image render_to_image(Renderer& renderer, const Camera& camera, const RenderSettings& settings, int width,

@@ -9,10 +9,13 @@
 
 #include "render/camera.h"
 #include "render/framebuffer.h"
+#include "render/hatch_field.h"
 #include "render/line_renderer.h"
 #include "render/mesh_buffers.h"
 #include "render/render_settings.h"
 #include "render/screen_passes.h"
+#include "render/stroke_pass.h"
+#include "render/strokes.h"
 #include "render/surface_renderer.h"
 
 #include <memory>
@@ -49,12 +52,21 @@ public:
     // Draws one view into `target`. Without a mesh, clears to the background.
     void render(const Camera& camera, const RenderSettings& settings, const RenderTarget& target);
 
+    // The hatching strokes of a view of width x height (settings.hatching;
+    // none without a mesh): streamlines over the hatching field
+    // (render/hatch_field.h, render/hatch_streamlines.h), in image pixels.
+    // Leaves GL_FRAMEBUFFER unbound.
+    std::vector<Stroke> hatch_strokes(const Camera& camera, const RenderSettings& settings, int width, int height);
+
 private:
     void ensure_buffers(int width, int height, bool msaa);
+    std::vector<Stroke> hatch_strokes(const FrameParams& frame, const RenderSettings& settings);
 
     std::unique_ptr<MeshBuffers> mesh_;
     SurfaceRenderer surface_pass_;
     LineRenderer line_pass_;
+    HatchFieldPass hatch_field_;
+    StrokePass stroke_pass_;
     Compositor compositor_;
     ColorBar colorbar_;
     Framebuffer surface_ms_fb_;  // multisampled surface (when MSAA is on)

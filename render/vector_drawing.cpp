@@ -1,6 +1,7 @@
 #include "render/vector_drawing.h"
 
 #include "geometry/io/output_file.h"
+#include "render/stroke_pass.h"
 
 #include <glm/geometric.hpp>
 
@@ -17,6 +18,8 @@ std::optional<VectorFormat> vector_format_for(const std::string& path) {
 }
 
 std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing& d) {
+    const float taper = stroke.taper >= 0 ? stroke.taper : d.taper;
+    const float width = stroke.width > 0 ? stroke.width : d.line_width;
     // Resample within `taper` of either end, so that the width can change there.
     std::vector<glm::vec2> points;
     std::vector<float> opacity, along;  // along: arc length from the start
@@ -27,7 +30,7 @@ std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing
         if (i > 0) {
             const glm::vec2 a = stroke.points[i - 1], b = stroke.points[i];
             const float len = glm::distance(a, b);
-            const bool in_taper = d.taper > 0 && (s < d.taper || s + len > total - d.taper);
+            const bool in_taper = taper > 0 && (s < taper || s + len > total - taper);
             const int steps = in_taper ? std::max(1, int(std::ceil(len))) : 1;
             for (int k = 1; k < steps; ++k) {
                 const float t = float(k) / float(steps);
@@ -45,10 +48,10 @@ std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing
         // A segment takes the style of its middle.
         const float o = 0.5f * (opacity[i] + opacity[i + 1]);
         const float m = 0.5f * (along[i] + along[i + 1]);
-        float w = d.taper > 0 ? std::min(1.0f, 0.2f + 0.8f * std::min(m, total - m) / d.taper) : 1.0f;
+        float w = tapered_width(1.0f, taper, m, total);
         if (d.width_by_strength) w *= o;
         const float piece_opacity = d.width_by_strength ? (o > 0 ? 1.0f : 0.0f) : level(o);
-        const float piece_width = d.line_width * level(w);
+        const float piece_width = width * level(w);
         if (pieces.empty() || pieces.back().opacity != piece_opacity || pieces.back().width != piece_width)
             pieces.push_back({{points[i]}, piece_opacity, piece_width});
         pieces.back().points.push_back(points[i + 1]);

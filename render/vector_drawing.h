@@ -29,9 +29,10 @@ struct VectorDrawing {
 
 // A stroke cut into pieces of one opacity and one width each (both rounded
 // to 1/16), consecutive pieces sharing their end points: SVG and PDF paths
-// have one of each. Width: drawing.line_width times the taper (from 0.2 at a
-// path's end to 1 at `taper` pixels from it; ends are resampled every pixel
-// there) times the strength when width_by_strength.
+// have one of each. Width: the stroke's width (or drawing.line_width) times
+// the taper (tapered_width, render/stroke_pass.h: from 0.2 at a path's end to
+// 1 at `taper` pixels from it, the stroke's own taper or the drawing's; ends
+// are resampled every pixel there) times the strength when width_by_strength.
 struct StrokePiece {
     std::vector<glm::vec2> points;
     float opacity = 1;

@@ -3,6 +3,8 @@
 #include "render/plotter.h"
 #include "render/stroke_cleanup.h"
 
+#include <iterator>
+
 namespace kappa::render {
 
 VectorDrawing draw_vector_view(Renderer& renderer, const Camera& camera, const RenderSettings& settings, int width,
@@ -11,8 +13,8 @@ VectorDrawing draw_vector_view(Renderer& renderer, const Camera& camera, const R
     surface_only.lines = LineSelection{false, false, false, false};
     surface_only.vectors = 0;
     surface_only.hidden_lines = false;
-    const bool plain = settings.shading == Shading::None && settings.colormap == ColorMap::None &&
-                       settings.hatching == Hatching::None && !settings.colorbar;
+    surface_only.hatching = Hatching::None;  // hatching comes as strokes
+    const bool plain = settings.shading == Shading::None && settings.colormap == ColorMap::None && !settings.colorbar;
     if (plain) surface_only.background = glm::vec4(0);  // the underlay is left out
     underlay = render_to_image(renderer, camera, surface_only, width, height);
     SurfaceDepth depth{width, height, renderer.surface_depth()};
@@ -23,8 +25,12 @@ VectorDrawing draw_vector_view(Renderer& renderer, const Camera& camera, const R
     drawing.line_color = settings.line_color;
     drawing.background = settings.background;
     drawing.underlay = plain ? nullptr : &underlay;
-    if (renderer.mesh())
-        drawing.strokes = extract_strokes(source, camera, renderer.mesh()->bounds(), settings, depth);
+    if (renderer.mesh()) {
+        drawing.strokes = renderer.hatch_strokes(camera, settings, width, height);
+        std::vector<Stroke> lines = extract_strokes(source, camera, renderer.mesh()->bounds(), settings, depth);
+        drawing.strokes.insert(drawing.strokes.end(), std::make_move_iterator(lines.begin()),
+                               std::make_move_iterator(lines.end()));
+    }
     simplify_strokes(drawing.strokes, settings.simplify);
     drop_short_strokes(drawing.strokes, settings.min_stroke);
     if (settings.plotter) {

@@ -1,8 +1,9 @@
 // One view of the mesh as a vector drawing (SVG or PDF): the surface is
 // rendered without lines (its depth decides what the strokes hide, and its
 // picture becomes the underlay unless the surface is plain: --shading none,
-// no colour map, no hatching), then the visible strokes are extracted
-// (render/strokes.h) and written (render/vector_drawing.h).
+// no colour map), then the hatching strokes (render/hatch_streamlines.h) and
+// the visible line strokes (render/strokes.h) are made and written
+// (render/vector_drawing.h), hatching first, under the lines.
 #pragma once
 
 #include "render/renderer.h"

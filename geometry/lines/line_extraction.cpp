@@ -93,6 +93,7 @@ const char* line_type_name(LineType type) {
     case LineType::Suggestive: return "suggestive";
     case LineType::Boundary: return "boundaries";
     case LineType::Crease: return "creases";
+    case LineType::Hatching: return "hatching";
     }
     return "";
 }

@@ -29,9 +29,11 @@
 
 namespace kappa {
 
-enum class LineType : int { Contour, Suggestive, Boundary, Crease };
-constexpr int kLineTypeCount = 4;
-const char* line_type_name(LineType type);  // "contours", "suggestive", "boundaries", "creases" (as in --lines)
+// Hatching is a kind of stroke too (render/hatch_streamlines.h); extract_lines never makes it.
+enum class LineType : int { Contour, Suggestive, Boundary, Crease, Hatching };
+constexpr int kLineTypeCount = 5;
+// "contours", "suggestive", "boundaries", "creases" (as in --lines), "hatching"
+const char* line_type_name(LineType type);
 
 struct LineSegment {
     glm::vec3 a, b;                 // model coordinates

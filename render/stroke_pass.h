@@ -1,0 +1,34 @@
+// Draws strokes made on the CPU (render/strokes.h; streamline hatching) into
+// the line coverage buffer, as the line passes draw theirs: anti-aliased
+// quads (shaders/line_quad.glsl, lines_frag.glsl), per-point width (a
+// stroke's own width or the default, thinned over its taper) and opacity.
+#pragma once
+
+#include "render/frame_params.h"
+#include "render/shader_program.h"
+#include "render/strokes.h"
+
+#include <vector>
+
+namespace kappa::render {
+
+// Width of a stroke at arc length s of total length L: `width` thinned to
+// 0.2 of it at the ends over `taper` pixels (render/vector_drawing.h uses the same).
+float tapered_width(float width, float taper, float s, float total);
+
+class StrokePass {
+public:
+    StrokePass();   // compiles the shaders (GL context current)
+    ~StrokePass();
+    StrokePass(const StrokePass&) = delete;
+    StrokePass& operator=(const StrokePass&) = delete;
+    // Into the bound framebuffer (blending as the line passes: GL_MAX).
+    void draw(const std::vector<Stroke>& strokes, float default_width, const FrameParams& frame,
+              unsigned surface_depth_texture);
+
+private:
+    ShaderProgram program_;
+    unsigned vao_ = 0, buffer_ = 0;
+};
+
+}  // namespace kappa::render
