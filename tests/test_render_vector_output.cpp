@@ -98,3 +98,11 @@ TEST_CASE("kappa render refuses unknown output formats before reading the mesh",
     CHECK(r.exit_code == 2);
     CHECK(r.output.find(".svg or .pdf") != std::string::npos);
 }
+
+TEST_CASE("Hatching comes out as strokes in SVG and PDF, matching the PNG", "[render][cli][vector][hatching]") {
+    for (const char* ext : {"svg", "pdf"}) {
+        INFO(ext);
+        const auto [raster, vector] = png_and_vector(test::shared_mesh("spot.obj"), ext, "--shading none --hatching cross");
+        check_agreement(raster, vector);
+    }
+}
