@@ -44,7 +44,8 @@ private:
 // The parts of a stroke at half ink or more, resampled every half pixel.
 std::vector<Stroke> inked_parts(const Stroke& s) {
     std::vector<Stroke> parts;
-    Stroke run{s.type, {}, {}};
+    Stroke run;
+    run.type = s.type;
     auto flush = [&] {
         if (run.points.size() >= 2) parts.push_back(run);
         run.points.clear(), run.opacity.clear();
@@ -69,6 +70,7 @@ glm::vec2 end_of(const Stroke& s) { return s.points.back(); }
 void reverse(Stroke& s) {
     std::reverse(s.points.begin(), s.points.end());
     std::reverse(s.opacity.begin(), s.opacity.end());
+    std::reverse(s.strength.begin(), s.strength.end());
 }
 
 // Joins paths of one type whose ends are within radius: each path is grown
@@ -176,7 +178,8 @@ std::vector<Stroke> plotter_paths(std::vector<Stroke> strokes, float radius) {
     std::vector<Stroke> kept;
     for (size_t i : order) {
         const Stroke& s = inked[i];
-        Stroke run{s.type, {}, {}};
+        Stroke run;
+    run.type = s.type;
         std::vector<Stroke> runs;
         for (size_t k = 0; k < s.points.size(); ++k) {
             if (grid.near_other(s.points[k], i)) {

@@ -60,8 +60,13 @@ void simplify_strokes(std::vector<Stroke>& strokes, float tolerance) {
         douglas_peucker(s.points, 0, s.points.size() - 1, tolerance, keep);
         size_t n = 0;
         for (size_t i = 0; i < s.points.size(); ++i)
-            if (keep[i]) s.points[n] = s.points[i], s.opacity[n] = s.opacity[i], ++n;
+            if (keep[i]) {
+                s.points[n] = s.points[i], s.opacity[n] = s.opacity[i];
+                if (!s.strength.empty()) s.strength[n] = s.strength[i];
+                ++n;
+            }
         s.points.resize(n), s.opacity.resize(n);
+        if (!s.strength.empty()) s.strength.resize(n);
     }
 }
 

@@ -60,12 +60,12 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
     auto image_point = [&](glm::vec2 window) { return glm::vec2(window.x, viewport.y - window.y); };
     auto close_run = [&] {
         if (run.points.size() >= 2) out.push_back(run);
-        run.points.clear(), run.opacity.clear();
+        run.points.clear(), run.opacity.clear(), run.strength.clear();
     };
-    auto add = [&](glm::vec2 window, float opacity) {
+    auto add = [&](glm::vec2 window, float opacity, float strength) {
         const glm::vec2 p = image_point(window);
         if (!run.points.empty() && run.points.back() == p) return;
-        run.points.push_back(p), run.opacity.push_back(opacity);
+        run.points.push_back(p), run.opacity.push_back(opacity), run.strength.push_back(strength);
     };
     for (size_t i = 0; i + 1 < line.points.size(); ++i) {
         const WindowPoint a = to_window(mvp, line.points[i], viewport);
@@ -75,7 +75,8 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
             continue;
         }
         const float tolerance = std::max(line.tolerance, scale_tolerance * std::max(a.w, b.w));
-        const float oa = line.strength[i], ob = line.strength[i + 1];
+        const float oa = line.opacity[i], ob = line.opacity[i + 1];
+        const float sa = line.strength[i], sb = line.strength[i + 1];
         // Samples every half pixel, both ends included.
         const int steps = std::max(1, int(std::ceil(2.0f * glm::distance(a.xy, b.xy))));
         for (int k = 0; k <= steps; ++k) {
@@ -84,7 +85,7 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
             const bool seen = test.visible(q, a.depth + (b.depth - a.depth) * t, tolerance);
             if (seen) {
                 // Keep the path's own vertices and the points where visibility changes.
-                if (k == 0 || k == steps || run.points.empty()) add(q, oa + (ob - oa) * t);
+                if (k == 0 || k == steps || run.points.empty()) add(q, oa + (ob - oa) * t, sa + (sb - sa) * t);
             } else if (!run.points.empty()) {
                 close_run();
             }

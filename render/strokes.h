@@ -24,6 +24,7 @@ struct Stroke {
     LineType type = LineType::Contour;
     std::vector<glm::vec2> points;  // pixels: x right, y down, (0, 0) the image's top-left corner
     std::vector<float> opacity;     // per point, in [0, 1] (fading)
+    std::vector<float> strength;    // per point: the test value fading uses (LineSegment::strength_a); may be empty
     float width = 0;                // pixels; 0: the drawing's line width
     float taper = -1;               // pixels; < 0: the drawing's taper
 };

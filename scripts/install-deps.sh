@@ -8,7 +8,7 @@ PACKAGES=(
   libglfw3-dev libimgui-dev python3-glad
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   xvfb xauth
-  librsvg2-bin poppler-utils
+  librsvg2-bin poppler-utils inkscape
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -20,7 +20,7 @@ using namespace kappa;
 
 namespace {
 
-LineSegment seg(glm::vec3 a, glm::vec3 b, float sa = 1, float sb = 1) { return {a, b, sa, sb, 0.1f}; }
+LineSegment seg(glm::vec3 a, glm::vec3 b, float sa = 1, float sb = 1) { return {a, b, sa, sb, sa, sb, 0.1f}; }
 
 ExtractedLines lines_of(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye, LineExtractionOptions o,
                         const std::vector<CreaseEdge>& creases = {}) {
@@ -45,9 +45,10 @@ TEST_CASE("chain_segments joins segments that share end points into paths", "[li
         CHECK(!path[0].closed());
         const bool forward = path[0].points.front() == a;
         CHECK((forward ? path[0].points.back() : path[0].points.front()) == d);
-        std::vector<float> s = path[0].strength;
-        if (!forward) std::reverse(s.begin(), s.end());
+        std::vector<float> s = path[0].strength, o = path[0].opacity;
+        if (!forward) std::reverse(s.begin(), s.end()), std::reverse(o.begin(), o.end());
         CHECK(s == std::vector<float>{1.0f, 0.5f, 0.25f, 0.75f});
+        CHECK(o == s);
     }
     SECTION("a point where three segments meet ends three paths") {
         CHECK(chain_segments({seg(a, b), seg(b, c), seg(b, e)}).size() == 3);

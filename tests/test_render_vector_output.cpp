@@ -106,3 +106,17 @@ TEST_CASE("Hatching comes out as strokes in SVG and PDF, matching the PNG", "[re
         check_agreement(raster, vector);
     }
 }
+
+TEST_CASE("Inkscape opens kappa's SVG headless and draws what the PNG shows", "[render][cli][vector]") {
+    const std::string dir = test::temp_dir();
+    const std::string common = test::shared_mesh("fandisk.obj") + " --size 800x600 -q --shading none";
+    REQUIRE(test::run_command(kappa_render(common + " -o " + dir + "/raster.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(common + " -o " + dir + "/vector.svg")).exit_code == 0);
+    // Inkscape wants a writable home for its preferences.
+    const auto r = test::run_command("HOME=" + dir + " inkscape --export-type=png --export-background=white "
+                                     "--export-background-opacity=1 --export-filename=" + dir + "/inkscape.png " +
+                                     dir + "/vector.svg");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    check_agreement(render::read_png(dir + "/raster.png"), render::read_png(dir + "/inkscape.png"));
+}

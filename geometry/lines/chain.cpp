@@ -64,6 +64,7 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
             const LineSegment& seg = segments[s];
             const int out_side = 1 - in_side;
             line.points.push_back(out_side ? seg.b : seg.a);
+            line.opacity.push_back(out_side ? seg.opacity_b : seg.opacity_a);
             line.strength.push_back(out_side ? seg.strength_b : seg.strength_a);
             line.tolerance = std::max(line.tolerance, seg.tolerance);
             const long next = partner(2 * s + size_t(out_side));
@@ -75,6 +76,7 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
         Polyline line;
         const LineSegment& seg = segments[s];
         line.points.push_back(in_side ? seg.b : seg.a);
+        line.opacity.push_back(in_side ? seg.opacity_b : seg.opacity_a);
         line.strength.push_back(in_side ? seg.strength_b : seg.strength_a);
         walk(s, in_side, line);
         out.push_back(std::move(line));

@@ -12,6 +12,7 @@ namespace kappa {
 
 struct Polyline {
     std::vector<glm::vec3> points;
+    std::vector<float> opacity;   // per point (LineSegment opacities)
     std::vector<float> strength;  // per point (LineSegment strengths)
     float tolerance = 0;          // the largest of its segments' (line_extraction.h)
     bool closed() const { return points.size() > 2 && points.front() == points.back(); }

@@ -59,7 +59,7 @@ void contour_segment(const Face& t, const glm::vec3 p[3], const ViewQuantities& 
     const float f[3] = {q.contour_ndotv[t[0]], q.contour_ndotv[t[1]], q.contour_ndotv[t[2]]};
     Crossing c0, c1;
     if (!find_crossings(t, f, c0, c1)) return;
-    out.push_back({point_at(c0, p), point_at(c1, p), 1, 1, half_longest_edge(p)});
+    out.push_back({point_at(c0, p), point_at(c1, p), 1, 1, 1, 1, half_longest_edge(p)});
 }
 
 void suggestive_segment(const Face& t, const glm::vec3 p[3], const SurfaceFields& fields, const ViewQuantities& q,
@@ -82,7 +82,9 @@ void suggestive_segment(const Face& t, const glm::vec3 p[3], const SurfaceFields
     }
     if (std::max(a0, a1) <= 0.0f) return;
     const glm::vec3 c0 = point_at(x0, p), c1 = point_at(x1, p);
-    out.push_back({c0 + (c1 - c0) * range.x, c0 + (c1 - c0) * range.y, a0, a1, half_longest_edge(p)});
+    const float s0 = g0 + o.sc_threshold, s1 = g1 + o.sc_threshold;  // Dw kr fs^2 at the two crossings
+    out.push_back({c0 + (c1 - c0) * range.x, c0 + (c1 - c0) * range.y, a0, a1, s0 + (s1 - s0) * range.x,
+                   s0 + (s1 - s0) * range.y, half_longest_edge(p)});
 }
 
 }  // namespace
@@ -144,7 +146,7 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
     if (o.boundaries)
         for (const glm::uvec2& e : boundary_edges(mesh, fields.flags)) {
             const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];
-            lines[int(LineType::Boundary)].push_back({a, b, 1, 1, 0.5f * glm::distance(a, b)});
+            lines[int(LineType::Boundary)].push_back({a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)});
         }
     if (o.creases || o.contours)
         for (const CreaseEdge& c : creases) {
@@ -152,7 +154,7 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
             // As crease_geom.glsl: a face is turned towards the eye when it is at either end.
             const bool front_a = glm::dot(na, eye - a) > 0 || glm::dot(na, eye - b) > 0;
             const bool front_b = glm::dot(nb, eye - a) > 0 || glm::dot(nb, eye - b) > 0;
-            const LineSegment s{a, b, 1, 1, 0.5f * glm::distance(a, b)};
+            const LineSegment s{a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)};
             if (o.creases && (front_a || front_b || o.hidden_creases)) lines[int(LineType::Crease)].push_back(s);
             else if (o.contours && front_a != front_b) contours.push_back(s);
         }

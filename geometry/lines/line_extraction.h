@@ -37,7 +37,8 @@ const char* line_type_name(LineType type);
 
 struct LineSegment {
     glm::vec3 a, b;                 // model coordinates
-    float strength_a = 1, strength_b = 1;  // opacity at each end (fading); 1 = full
+    float opacity_a = 1, opacity_b = 1;    // opacity at each end (fading); 1 = full
+    float strength_a = 1, strength_b = 1;  // the test value fading uses (suggestive contours: Dw kr fs^2); 1 for others
     float tolerance = 0;            // how far behind the drawn polygons the line may lie (model units):
                                     // half the longest edge of its triangle, or half its edge
 };
