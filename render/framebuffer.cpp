@@ -47,8 +47,7 @@ Framebuffer::Framebuffer(const Spec& spec) : spec_(spec) {
             glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
         } else {
             const GLenum format = spec.color_format == GL_R8 ? GL_RED : GL_RGBA;
-            const GLenum type = spec.color_format == GL_RGBA32F ? GL_FLOAT : GL_UNSIGNED_BYTE;
-            color_ = make_texture(spec.color_format, format, type, spec.width, spec.height);
+            color_ = make_texture(spec.color_format, format, GL_UNSIGNED_BYTE, spec.width, spec.height);
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
         }
     }
@@ -110,15 +109,6 @@ Image Framebuffer::read(bool unpremultiply) const {
                 image.pixels[i + c] = uint8_t(std::min(255u, (image.pixels[i + c] * 255u + a / 2) / a));
         }
     return image;
-}
-
-std::vector<glm::vec4> Framebuffer::read_float() const {
-    std::vector<glm::vec4> texels(size_t(spec_.width) * size_t(spec_.height));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, spec_.width, spec_.height, GL_RGBA, GL_FLOAT, texels.data());
-    return texels;
 }
 
 std::vector<float> Framebuffer::read_depth() const {

@@ -6,8 +6,6 @@
 #include "render/gl.h"
 #include "render/image.h"
 
-#include <glm/vec4.hpp>
-
 #include <vector>
 
 namespace kappa::render {
@@ -46,8 +44,6 @@ public:
     // Reads the depth attachment (window depth in [0, 1], 1 = background),
     // bottom row first as in GL window coordinates. Single-sampled only.
     std::vector<float> read_depth() const;
-    // Reads an RGBA32F colour attachment, bottom row first.
-    std::vector<glm::vec4> read_float() const;
 
 private:
     void release();

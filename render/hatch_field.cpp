@@ -1,15 +1,16 @@
 #include "render/hatch_field.h"
 
+#include <cmath>
+
 namespace kappa::render {
 
 HatchFieldPass::HatchFieldPass()
     : program_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "hatch_field_vert.glsl"}},
                 {GL_FRAGMENT_SHADER, {"hatch_field_frag.glsl"}}}) {}
 
-HatchField HatchFieldPass::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
-                                int direction) {
+HatchField HatchFieldPass::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
     const int w = int(frame.viewport.x), h = int(frame.viewport.y);
-    if (!fb_.matches(w, h, 0)) fb_ = Framebuffer({w, h, 0, GL_RGBA32F, true});
+    if (!fb_.matches(w, h, 0)) fb_ = Framebuffer({w, h, 0, GL_RGBA8, true});
     glBindFramebuffer(GL_FRAMEBUFFER, fb_.id());
     glViewport(0, 0, w, h);
     glClearColor(0, 0, 0, 0);
@@ -23,7 +24,6 @@ HatchField HatchFieldPass::draw(const MeshBuffers& mesh, const FrameParams& fram
     program_.set("u_light", camera_light_direction(s, frame));
     program_.set("u_viewport", frame.viewport);
     program_.set("u_feature_size", mesh.feature_size());
-    program_.set("u_direction", direction);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
@@ -31,7 +31,18 @@ HatchField HatchFieldPass::draw(const MeshBuffers& mesh, const FrameParams& fram
     mesh.draw_triangles();
     HatchField field;
     field.width = w, field.height = h;
-    field.texels = fb_.read_float();
+    const Image bytes = fb_.read(false);  // top row first; shaders/hatch_field_frag.glsl's layout
+    field.directions.resize(size_t(w) * size_t(h));
+    field.tone.resize(field.directions.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const Rgba p = bytes.at(x, h - 1 - y);
+            const size_t i = size_t(y) * size_t(w) + size_t(x);
+            const float w8 = float(p.b) / 255.0f;
+            const float a1 = 2.0f * float(M_PI) * float(p.r) / 255.0f, a2 = 2.0f * float(M_PI) * float(p.g) / 255.0f;
+            field.directions[i] = w8 * glm::vec4(std::cos(a1), std::sin(a1), std::cos(a2), std::sin(a2));
+            field.tone[i] = p.a == 0 ? glm::vec2(0) : glm::vec2(float(p.a - 1) / 254.0f, 1.0f);
+        }
     field.depth = fb_.read_depth();
     field.p22 = frame.projection[2][2], field.p32 = frame.projection[3][2];
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,7 +1,7 @@
 // The hatching field of a view, rendered on the GPU and read back: per pixel
-// the window angle of a principal direction (doubled: (cos 2a, sin 2a),
-// times how well the direction is defined), the tone's darkness, and whether
-// the surface there faces the eye; plus the surface depth. The streamlines
+// the window angles of both principal directions (doubled: (cos 2a, sin 2a),
+// times how well the directions are defined), the tone's darkness, and
+// whether the surface there faces the eye; plus the surface depth. The streamlines
 // of render/hatch_streamlines.h are traced over it on the CPU.
 #pragma once
 
@@ -19,7 +19,8 @@ namespace kappa::render {
 
 struct HatchField {
     int width = 0, height = 0;
-    std::vector<glm::vec4> texels;  // (cos 2a w, sin 2a w, darkness, facing), bottom row first
+    std::vector<glm::vec4> directions;  // (cos 2a1, sin 2a1, cos 2a2, sin 2a2) w, bottom row first
+    std::vector<glm::vec2> tone;        // (darkness, 1 where the surface faces the eye, else 0)
     std::vector<float> depth;       // window depth, 1 = background
     float p22 = 0, p32 = 0;         // projection terms: camera distance = p32 / (2 depth - 1 + p22)
 };
@@ -27,9 +28,8 @@ struct HatchField {
 class HatchFieldPass {
 public:
     HatchFieldPass();  // compiles the shaders (GL context current)
-    // direction: 1 = d1 (max), 2 = d2 (min). Leaves GL_FRAMEBUFFER unbound (0).
-    HatchField draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings,
-                    int direction);
+    // Leaves GL_FRAMEBUFFER unbound (0).
+    HatchField draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
 
 private:
     ShaderProgram program_;

@@ -18,58 +18,70 @@ constexpr float kFallbackWeight = 0.05f;
 // The smoothed field and what tracing asks of it, in window pixels.
 class Field {
 public:
-    Field(const HatchField& f, float sigma) : f_(f), w_(f.width), h_(f.height) {
-        // Normalised Gaussian averaging of the doubled-angle vectors over the surface.
-        dir_.assign(size_t(w_) * size_t(h_), glm::vec2(0));
-        std::vector<glm::vec3> tmp(dir_.size()), src(dir_.size());
-        for (size_t i = 0; i < src.size(); ++i) {
-            const float cover = f.texels[i].w > 0.5f ? 1.0f : 0.0f;
-            src[i] = glm::vec3(f.texels[i].x, f.texels[i].y, 1.0f) * cover;
-        }
-        const int r = std::max(1, int(std::ceil(2.5f * sigma)));
-        std::vector<float> k(size_t(2 * r + 1));
-        for (int i = -r; i <= r; ++i) k[size_t(i + r)] = std::exp(-0.5f * float(i * i) / (sigma * sigma));
+    // The averaged directions live on a grid of `cell` pixels (half a
+    // spacing): the Gaussian is two spacings wide, so nothing finer survives it.
+    Field(const HatchField& f, int family, float sigma, float cell)
+        : f_(f), w_(f.width), h_(f.height), cell_(std::max(1.0f, cell)),
+          gw_(int(std::ceil(float(w_) / cell_))), gh_(int(std::ceil(float(h_) / cell_))) {
+        // Cell sums of the doubled-angle vectors over the surface (z: the surface pixels).
+        std::vector<glm::vec3> src(size_t(gw_) * size_t(gh_), glm::vec3(0)), tmp(src.size());
         for (int y = 0; y < h_; ++y)
             for (int x = 0; x < w_; ++x) {
-                glm::vec3 sum(0);
-                for (int i = std::max(-r, -x); i <= std::min(r, w_ - 1 - x); ++i)
-                    sum += k[size_t(i + r)] * src[index(x + i, y)];
-                tmp[index(x, y)] = sum;
+                const size_t i = size_t(y) * size_t(w_) + size_t(x);
+                const glm::vec4& d = f.directions[i];
+                if (f.tone[i].y > 0.5f)
+                    src[grid_index(int(float(x) / cell_), int(float(y) / cell_))] +=
+                        family == 0 ? glm::vec3(d.x, d.y, 1.0f) : glm::vec3(d.z, d.w, 1.0f);
             }
-        for (int y = 0; y < h_; ++y)
-            for (int x = 0; x < w_; ++x) {
+        // Normalised Gaussian averaging, separable, in cells.
+        const float sc = sigma / cell_;
+        const int r = std::max(1, int(std::ceil(2.5f * sc)));
+        std::vector<float> k(size_t(2 * r + 1));
+        for (int i = -r; i <= r; ++i) k[size_t(i + r)] = std::exp(-0.5f * float(i * i) / (sc * sc));
+        for (int y = 0; y < gh_; ++y)
+            for (int x = 0; x < gw_; ++x) {
                 glm::vec3 sum(0);
-                for (int i = std::max(-r, -y); i <= std::min(r, h_ - 1 - y); ++i)
-                    sum += k[size_t(i + r)] * tmp[index(x, y + i)];
+                for (int i = std::max(-r, -x); i <= std::min(r, gw_ - 1 - x); ++i)
+                    sum += k[size_t(i + r)] * src[grid_index(x + i, y)];
+                tmp[grid_index(x, y)] = sum;
+            }
+        dir_.assign(src.size(), glm::vec2(0));
+        for (int y = 0; y < gh_; ++y)
+            for (int x = 0; x < gw_; ++x) {
+                glm::vec3 sum(0);
+                for (int i = std::max(-r, -y); i <= std::min(r, gh_ - 1 - y); ++i)
+                    sum += k[size_t(i + r)] * tmp[grid_index(x, y + i)];
                 // The mean of the weighted vectors, plus a little of the 45-degree fallback.
                 const glm::vec2 mean = sum.z > 0 ? glm::vec2(sum) / sum.z : glm::vec2(0);
-                dir_[index(x, y)] = mean + kFallbackWeight * glm::vec2(0, 1);  // (cos 90, sin 90): 45 degrees
+                dir_[grid_index(x, y)] = mean + kFallbackWeight * glm::vec2(0, 1);  // (cos 90, sin 90): 45 degrees
             }
     }
 
     bool inside(glm::vec2 p) const { return p.x >= 0 && p.y >= 0 && p.x < float(w_) && p.y < float(h_); }
-    bool on_surface(glm::vec2 p) const { return inside(p) && texel(p).w > 0.5f && depth(p) < 1.0f; }
-    float darkness(glm::vec2 p) const { return texel(p).z; }
+    bool on_surface(glm::vec2 p) const { return inside(p) && tone(p).y > 0.5f && depth(p) < 1.0f; }
+    float darkness(glm::vec2 p) const { return tone(p).x; }
     float distance(glm::vec2 p) const { return f_.p32 / (depth(p) * 2.0f - 1.0f + f_.p22); }
     // The unit direction at p (bilinear in the doubled angle), turned to agree with `along`.
     glm::vec2 direction(glm::vec2 p, glm::vec2 along) const {
-        const glm::vec2 q = glm::clamp(p - 0.5f, glm::vec2(0), glm::vec2(float(w_ - 1), float(h_ - 1)));
-        const int x0 = int(q.x), y0 = int(q.y), x1 = std::min(x0 + 1, w_ - 1), y1 = std::min(y0 + 1, h_ - 1);
+        const glm::vec2 q = glm::clamp(p / cell_ - 0.5f, glm::vec2(0), glm::vec2(float(gw_ - 1), float(gh_ - 1)));
+        const int x0 = int(q.x), y0 = int(q.y), x1 = std::min(x0 + 1, gw_ - 1), y1 = std::min(y0 + 1, gh_ - 1);
         const float fx = q.x - float(x0), fy = q.y - float(y0);
-        const glm::vec2 v = (1 - fy) * ((1 - fx) * dir_[index(x0, y0)] + fx * dir_[index(x1, y0)]) +
-                            fy * ((1 - fx) * dir_[index(x0, y1)] + fx * dir_[index(x1, y1)]);
+        const glm::vec2 v = (1 - fy) * ((1 - fx) * dir_[grid_index(x0, y0)] + fx * dir_[grid_index(x1, y0)]) +
+                            fy * ((1 - fx) * dir_[grid_index(x0, y1)] + fx * dir_[grid_index(x1, y1)]);
         const float a = 0.5f * std::atan2(v.y, v.x);
         const glm::vec2 d(std::cos(a), std::sin(a));
         return glm::dot(d, along) < 0 ? -d : d;
     }
 
 private:
-    size_t index(int x, int y) const { return size_t(y) * size_t(w_) + size_t(x); }
-    const glm::vec4& texel(glm::vec2 p) const { return f_.texels[index(int(p.x), int(p.y))]; }
-    float depth(glm::vec2 p) const { return f_.depth[index(int(p.x), int(p.y))]; }
+    size_t grid_index(int x, int y) const { return size_t(y) * size_t(gw_) + size_t(x); }
+    const glm::vec2& tone(glm::vec2 p) const { return f_.tone[size_t(int(p.y)) * size_t(w_) + size_t(int(p.x))]; }
+    float depth(glm::vec2 p) const { return f_.depth[size_t(int(p.y)) * size_t(w_) + size_t(int(p.x))]; }
     const HatchField& f_;
     int w_, h_;
-    std::vector<glm::vec2> dir_;
+    float cell_;
+    int gw_, gh_;
+    std::vector<glm::vec2> dir_;  // averaged doubled-angle vectors per cell
 };
 
 // Points of the streamlines drawn so far, in cells of one spacing.
@@ -111,7 +123,7 @@ std::vector<Stroke> trace_hatching(const HatchField& hatch, const std::vector<gl
                                    const HatchParams& params) {
     std::vector<Stroke> strokes;
     if (hatch.width <= 0 || hatch.height <= 0 || params.spacing <= 0) return strokes;
-    const Field field(hatch, 2.0f * params.spacing);
+    const Field field(hatch, params.family, 2.0f * params.spacing, 0.5f * params.spacing);
     PointGrid grid(hatch.width, hatch.height, params.spacing);
     // Separation of strokes at p (pixels), or 0 where the tone wants none.
     auto separation = [&](glm::vec2 p) {

@@ -36,6 +36,7 @@ namespace kappa::render {
 struct HatchParams {
     float spacing = 4;        // pixels between strokes in the darkest tone
     float max_length = 120;   // pixels
+    int family = 0;           // along d1 (0, max) or d2 (1, min)
     bool cross_family = false;  // the second family of cross hatching: only in the darker tones
     float taper = 6;          // pixels: stroke ends thin out over this length
 };

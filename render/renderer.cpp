@@ -87,10 +87,10 @@ std::vector<Stroke> Renderer::hatch_strokes(const FrameParams& frame, const Rend
     HatchParams params;
     params.spacing = s.hatch_spacing;
     std::vector<Stroke> strokes;
+    const HatchField field = hatch_field_.draw(*mesh_, frame, s);
     // Max: along d1; min: along d2; cross: d1, then d2 in the darker tones.
     for (int family = 0; family < (s.hatching == Hatching::Cross ? 2 : 1); ++family) {
-        const int direction = s.hatching == Hatching::Min || family == 1 ? 2 : 1;
-        const HatchField field = hatch_field_.draw(*mesh_, frame, s, direction);
+        params.family = s.hatching == Hatching::Min || family == 1 ? 1 : 0;
         params.cross_family = family == 1;
         // Seeds: surface samples turned towards the eye and not hidden, in their fixed order.
         std::vector<glm::vec2> seeds;
