@@ -36,9 +36,9 @@ void write_pdf(const std::string& path, const VectorDrawing& d) {
     cairo_set_line_width(cr, d.line_width);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    for (int type = 0; type < kLineTypeCount; ++type)
+    for (const LineType type : layer_order())
         for (const Stroke& s : d.strokes) {
-            if (int(s.type) != type) continue;
+            if (s.type != type) continue;
             for (const StrokePiece& piece : stroke_pieces(s, d)) {
                 cairo_set_line_width(cr, piece.width);
                 cairo_set_source_rgba(cr, d.line_color.r, d.line_color.g, d.line_color.b, piece.opacity);

@@ -1,6 +1,7 @@
 #include "render/plotter.h"
 
 #include "render/stroke_cleanup.h"
+#include "render/vector_drawing.h"
 
 #include <glm/geometric.hpp>
 
@@ -128,15 +129,15 @@ std::vector<Stroke> greedy_order(std::vector<Stroke> strokes) {
     glm::vec2 pen(0);
     std::vector<char> done(strokes.size(), 0);
     for (size_t n = 0; n < strokes.size(); ++n) {
-        // The next line type still to draw: the lowest one left.
-        int type = kLineTypeCount;
+        // The next line type still to draw: the first layer left.
+        int rank = kLineTypeCount;
         for (size_t i = 0; i < strokes.size(); ++i)
-            if (!done[i]) type = std::min(type, int(strokes[i].type));
+            if (!done[i]) rank = std::min(rank, layer_rank(strokes[i].type));
         size_t best = 0;
         bool best_reversed = false;
         float best_d = INFINITY;
         for (size_t i = 0; i < strokes.size(); ++i) {
-            if (done[i] || int(strokes[i].type) != type) continue;
+            if (done[i] || layer_rank(strokes[i].type) != rank) continue;
             const float ds = glm::distance(pen, start_of(strokes[i])), de = glm::distance(pen, end_of(strokes[i]));
             if (ds < best_d) best_d = ds, best = i, best_reversed = false;
             if (de < best_d) best_d = de, best = i, best_reversed = true;
@@ -198,7 +199,8 @@ std::vector<Stroke> plotter_paths(std::vector<Stroke> strokes, float radius) {
     kept = join_touching(std::move(kept), 2 * radius);  // step 2 leaves gaps of up to radius + half a pixel
     simplify_strokes(kept, 0.25f);
     // The files write one line type after another: the order to beat is that one.
-    std::stable_sort(kept.begin(), kept.end(), [](const Stroke& a, const Stroke& b) { return a.type < b.type; });
+    std::stable_sort(kept.begin(), kept.end(),
+                     [](const Stroke& a, const Stroke& b) { return layer_rank(a.type) < layer_rank(b.type); });
     // 4. Ordered, unless the given order already travels less.
     std::vector<Stroke> ordered = greedy_order(kept);
     return pen_up_travel(ordered) <= pen_up_travel(kept) ? ordered : kept;

@@ -105,8 +105,23 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
     options.suggestive = lines.suggestive;
     options.boundaries = lines.boundaries;
     options.creases = lines.creases;
+    options.suggestive_highlights = lines.suggestive_highlights;
+    options.dwkr = lines.dwkr;
+    options.ridges = lines.ridges, options.valleys = lines.valleys;
+    options.parabolic = lines.parabolic, options.mean_zero = lines.mean_zero;
+    options.isophotes = lines.isophotes, options.topo = lines.topo;
+    options.hidden_creases = settings.hidden_lines;
     options.sc_threshold = settings.sc_threshold;
+    options.sh_threshold = settings.sh_threshold;
+    options.rv_threshold = settings.rv_threshold;
+    options.feature_size = source.feature_size;
     options.fade = settings.fade;
+    // Level lines as render/line_renderer.cpp draws them.
+    options.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(settings, frame));
+    options.isophote_count = settings.isophote_count;
+    options.topo_count = settings.topo_count;
+    options.topo_step = 2.0f * bounds.radius / float(std::max(1, settings.topo_count));
+    options.topo_first = bounds.center.y - bounds.radius + 0.5f * options.topo_step;
     static const std::vector<glm::vec3> none;
     const ViewQuantities quantities = compute_view_quantities(
         *source.mesh, *source.fields, source.contour_normals ? *source.contour_normals : none, frame.eye,
@@ -122,7 +137,8 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
         settings.detail > 0 ? settings.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y) : 0.0f;
     std::vector<Stroke> strokes;
     for (int type = 0; type < kLineTypeCount; ++type) {
-        const bool isoline = type == int(LineType::Contour) || type == int(LineType::Suggestive);
+        const bool isoline = type == int(LineType::Contour) || type == int(LineType::Suggestive) ||
+                             type == int(LineType::SuggestiveHighlight) || type == int(LineType::Dwkr);
         for (const Polyline& line : chain_segments(extracted[size_t(type)]))
             visible_runs(line, LineType(type), frame.mvp, frame.viewport, test, isoline ? scale_tolerance : 0.0f,
                          strokes);

@@ -72,12 +72,12 @@ void write_svg(const std::string& path, const VectorDrawing& d) {
                      "<g inkscape:groupmode=\"layer\" id=\"surface\" inkscape:label=\"surface\">\n"
                      "<image width=\"%d\" height=\"%d\" xlink:href=\"data:image/png;base64,%s\"/>\n</g>\n",
                      d.width, d.height, base64(encode_png(*d.underlay)).c_str());
-    for (int type = 0; type < kLineTypeCount; ++type) {
+    for (const LineType type : layer_order()) {
         bool opened = false;
         for (const Stroke& s : d.strokes) {
-            if (int(s.type) != type) continue;
+            if (s.type != type) continue;
             if (!opened) {
-                const char* name = line_type_name(LineType(type));
+                const char* name = line_type_name(type);
                 std::fprintf(f,
                              "<g inkscape:groupmode=\"layer\" id=\"%s\" inkscape:label=\"%s\" fill=\"none\" "
                              "stroke=\"%s\" stroke-width=\"%g\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n",

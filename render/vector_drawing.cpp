@@ -17,6 +17,15 @@ std::optional<VectorFormat> vector_format_for(const std::string& path) {
     return std::nullopt;
 }
 
+std::vector<LineType> layer_order() {
+    std::vector<LineType> order{LineType::Hatching};
+    for (int t = 0; t < kLineTypeCount; ++t)
+        if (LineType(t) != LineType::Hatching) order.push_back(LineType(t));
+    return order;
+}
+
+int layer_rank(LineType type) { return type == LineType::Hatching ? 0 : int(type) + 1; }
+
 std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing& d) {
     const float taper = stroke.taper >= 0 ? stroke.taper : d.taper;
     const float width = stroke.width > 0 ? stroke.width : d.line_width;

@@ -40,6 +40,11 @@ struct StrokePiece {
 };
 std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing& drawing);
 
+// The order of the layers in a file: hatching at the bottom, then the line
+// types in LineType order.
+std::vector<LineType> layer_order();
+int layer_rank(LineType type);  // its position in layer_order()
+
 enum class VectorFormat { Svg, Pdf };
 // From the file's extension (.svg, .pdf, any case); nullopt for anything else.
 std::optional<VectorFormat> vector_format_for(const std::string& path);

@@ -111,3 +111,43 @@ TEST_CASE("CPU creases: a cube seen from a corner shows 9 edges, 6 of them on it
     REQUIRE(chained.size() == 1);
     CHECK(chained[0].points.size() == 7);
 }
+
+TEST_CASE("CPU curvature and level lines lie where the mathematics puts them", "[lines]") {
+    // Torus, R = 1, r = 0.6, axis z: K = 0 on the top and bottom circles
+    // (|z| = r), H = 0 where cos v = -R / 2r, i.e. at distance R - R/2 from the axis.
+    const float R = 1.0f, r = 0.6f;
+    const Mesh torus = make_torus(R, r, 192, 96);
+    const SurfaceFields fields = compute_surface_fields(torus);
+    LineExtractionOptions o;
+    o.contours = o.suggestive = o.creases = false;
+    o.parabolic = o.mean_zero = true;
+    const ExtractedLines lines = lines_of(torus, fields, glm::vec3(0, 0, 10), o);
+    REQUIRE(lines[int(LineType::Parabolic)].size() > 100);
+    REQUIRE(lines[int(LineType::MeanZero)].size() > 100);
+    const float tol = 0.02f;  // edges are about 0.03 long; the estimate is second order
+    for (const LineSegment& s : lines[int(LineType::Parabolic)]) CHECK(std::fabs(std::fabs(s.a.z) - r) < tol);
+    for (const LineSegment& s : lines[int(LineType::MeanZero)])
+        CHECK(std::fabs(glm::length(glm::vec2(s.a.x, s.a.y)) - 0.5f * R) < tol);
+    // Both sets are two closed circles.
+    CHECK(chain_segments(lines[int(LineType::Parabolic)]).size() == 2);
+    CHECK(chain_segments(lines[int(LineType::MeanZero)]).size() == 2);
+
+    // Unit sphere: isophotes are circles where n.l = (k - 1/2) / N, topographic lines where y = level.
+    const Mesh sphere = make_icosphere(1.0f, 4);
+    const SurfaceFields sf = compute_surface_fields(sphere);
+    LineExtractionOptions lo;
+    lo.contours = lo.suggestive = lo.creases = false;
+    lo.isophotes = lo.topo = true;
+    lo.light = glm::normalize(glm::vec3(1, 1, 1));
+    lo.isophote_count = 4;
+    lo.topo_first = -0.75f, lo.topo_step = 0.5f, lo.topo_count = 4;
+    const ExtractedLines levels = lines_of(sphere, sf, glm::vec3(0, 0, 10), lo);
+    CHECK(chain_segments(levels[int(LineType::Isophote)]).size() == 4);
+    CHECK(chain_segments(levels[int(LineType::Topo)]).size() == 4);
+    for (const LineSegment& s : levels[int(LineType::Isophote)]) {
+        const float v = glm::dot(glm::normalize(s.a), lo.light);  // n = p on the unit sphere
+        CHECK(std::fabs(v - s.strength_a) < 0.01f);               // the level it was cut at
+        CHECK(std::fabs(std::fmod(s.strength_a * 4.0f, 1.0f) - 0.5f) < 1e-4f);  // (k - 1/2) / 4
+    }
+    for (const LineSegment& s : levels[int(LineType::Topo)]) CHECK(std::fabs(s.a.y - s.strength_a) < 1e-5f);
+}

@@ -1,6 +1,9 @@
 #include "line_extraction.h"
 
 #include "geometry/creases.h"
+#include "geometry/lines/curvature_lines.h"
+#include "geometry/lines/level_lines.h"
+#include "geometry/lines/zero_crossings.h"
 #include "geometry/surface_fields.h"
 #include "geometry/vertex_flags.h"
 
@@ -12,48 +15,7 @@ namespace kappa {
 
 namespace {
 
-// Where the linear field f crosses zero on the edge (i, j) of a triangle:
-// walked from the endpoint with the smaller vertex number (see the header).
-struct Crossing {
-    int lo, hi;  // corners of the triangle
-    float s;     // point = mix(P[lo], P[hi], s)
-};
-
-Crossing edge_zero(const Face& t, int i, int j, const float f[3]) {
-    Crossing c;
-    c.lo = t[i] < t[j] ? i : j;
-    c.hi = c.lo == i ? j : i;
-    c.s = f[c.lo] / (f[c.lo] - f[c.hi]);
-    return c;
-}
-
-// The two edges crossed by the zero set of f (values classified as f > 0 or
-// not, so there are always 0 or 2); false when there are none.
-bool find_crossings(const Face& t, const float f[3], Crossing& c0, Crossing& c1) {
-    int n = 0;
-    for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3;
-        if ((f[i] > 0.0f) != (f[j] > 0.0f)) (n == 0 ? c0 : c1) = edge_zero(t, i, j, f), ++n;
-    }
-    return n == 2;
-}
-
-float lerp_at(const Crossing& c, const float v[3]) { return v[c.lo] + (v[c.hi] - v[c.lo]) * c.s; }
-glm::vec3 point_at(const Crossing& c, const glm::vec3 p[3]) { return p[c.lo] + (p[c.hi] - p[c.lo]) * c.s; }
-
-// Clips [0, 1] to where the linear function g (g0 at 0, g1 at 1) is positive.
-bool clip_positive(float g0, float g1, glm::vec2& range) {
-    if (g0 <= 0.0f && g1 <= 0.0f) return false;
-    if (g0 > 0.0f && g1 > 0.0f) return true;
-    const float s = g0 / (g0 - g1);
-    if (g0 > 0.0f) range.y = std::min(range.y, s);
-    else range.x = std::max(range.x, s);
-    return range.x < range.y;
-}
-
-float half_longest_edge(const glm::vec3 p[3]) {
-    return 0.5f * std::max({glm::distance(p[0], p[1]), glm::distance(p[1], p[2]), glm::distance(p[2], p[0])});
-}
+using namespace lines;
 
 void contour_segment(const Face& t, const glm::vec3 p[3], const ViewQuantities& q, std::vector<LineSegment>& out) {
     const float f[3] = {q.contour_ndotv[t[0]], q.contour_ndotv[t[1]], q.contour_ndotv[t[2]]};
@@ -62,29 +24,46 @@ void contour_segment(const Face& t, const glm::vec3 p[3], const ViewQuantities& 
     out.push_back({point_at(c0, p), point_at(c1, p), 1, 1, 1, 1, half_longest_edge(p)});
 }
 
+// The zero set of kr kept where sign * Dw kr fs^2 - threshold > 0 and n.v > 0
+// (sign 1: suggestive contours, -1: suggestive highlights), faded over
+// [threshold, threshold + max(threshold, 0.05)] as the shaders.
 void suggestive_segment(const Face& t, const glm::vec3 p[3], const SurfaceFields& fields, const ViewQuantities& q,
-                        const LineExtractionOptions& o, std::vector<LineSegment>& out) {
+                        float sign, float threshold, bool fade, std::vector<LineSegment>& out) {
     if (fields.unreliable(t[0]) || fields.unreliable(t[1]) || fields.unreliable(t[2])) return;
     const float f[3] = {q.kr[t[0]], q.kr[t[1]], q.kr[t[2]]};
     Crossing x0, x1;
     if (!find_crossings(t, f, x0, x1)) return;
     const float strength[3] = {q.sc_strength[t[0]], q.sc_strength[t[1]], q.sc_strength[t[2]]};
     const float ndotv[3] = {q.ndotv[t[0]], q.ndotv[t[1]], q.ndotv[t[2]]};
-    const float g0 = lerp_at(x0, strength) - o.sc_threshold, g1 = lerp_at(x1, strength) - o.sc_threshold;
+    const float g0 = sign * lerp_at(x0, strength) - threshold, g1 = sign * lerp_at(x1, strength) - threshold;
     glm::vec2 range(0, 1);
     if (!clip_positive(g0, g1, range)) return;
     if (!clip_positive(lerp_at(x0, ndotv), lerp_at(x1, ndotv), range)) return;
     float a0 = 1, a1 = 1;
-    if (o.fade) {
-        const float ramp = std::max(o.sc_threshold, 0.05f);
+    if (fade) {
+        const float ramp = std::max(threshold, 0.05f);
         a0 = std::clamp((g0 + (g1 - g0) * range.x) / ramp, 0.0f, 1.0f);
         a1 = std::clamp((g0 + (g1 - g0) * range.y) / ramp, 0.0f, 1.0f);
     }
     if (std::max(a0, a1) <= 0.0f) return;
     const glm::vec3 c0 = point_at(x0, p), c1 = point_at(x1, p);
-    const float s0 = g0 + o.sc_threshold, s1 = g1 + o.sc_threshold;  // Dw kr fs^2 at the two crossings
+    const float s0 = lerp_at(x0, strength), s1 = lerp_at(x1, strength);  // Dw kr fs^2 at the two crossings
     out.push_back({c0 + (c1 - c0) * range.x, c0 + (c1 - c0) * range.y, a0, a1, s0 + (s1 - s0) * range.x,
                    s0 + (s1 - s0) * range.y, half_longest_edge(p)});
+}
+
+// Dw kr fs^2 = s on the front-facing side, not faded (as rtsc).
+void dwkr_segment(const Face& t, const glm::vec3 p[3], const SurfaceFields& fields, const ViewQuantities& q,
+                  float s, std::vector<LineSegment>& out) {
+    if (fields.unreliable(t[0]) || fields.unreliable(t[1]) || fields.unreliable(t[2])) return;
+    const float f[3] = {q.sc_strength[t[0]] - s, q.sc_strength[t[1]] - s, q.sc_strength[t[2]] - s};
+    Crossing x0, x1;
+    if (!find_crossings(t, f, x0, x1)) return;
+    const float ndotv[3] = {q.ndotv[t[0]], q.ndotv[t[1]], q.ndotv[t[2]]};
+    glm::vec2 range(0, 1);
+    if (!clip_positive(lerp_at(x0, ndotv), lerp_at(x1, ndotv), range)) return;
+    const glm::vec3 c0 = point_at(x0, p), c1 = point_at(x1, p);
+    out.push_back({c0 + (c1 - c0) * range.x, c0 + (c1 - c0) * range.y, 1, 1, s, s, half_longest_edge(p)});
 }
 
 }  // namespace
@@ -95,6 +74,14 @@ const char* line_type_name(LineType type) {
     case LineType::Suggestive: return "suggestive";
     case LineType::Boundary: return "boundaries";
     case LineType::Crease: return "creases";
+    case LineType::SuggestiveHighlight: return "suggestive-highlights";
+    case LineType::Dwkr: return "dwkr";
+    case LineType::Ridge: return "ridges";
+    case LineType::Valley: return "valleys";
+    case LineType::Parabolic: return "parabolic";
+    case LineType::MeanZero: return "mean-zero";
+    case LineType::Isophote: return "isophotes";
+    case LineType::Topo: return "topo";
     case LineType::Hatching: return "hatching";
     }
     return "";
@@ -137,12 +124,19 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
                              const std::vector<CreaseEdge>& creases, const LineExtractionOptions& o) {
     ExtractedLines lines;
     auto& contours = lines[int(LineType::Contour)];
-    if (o.contours || o.suggestive)
+    if (o.contours || o.suggestive || o.suggestive_highlights || o.dwkr)
         for (const Face& t : mesh.faces) {
             const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
             if (o.contours) contour_segment(t, p, q, contours);
-            if (o.suggestive) suggestive_segment(t, p, fields, q, o, lines[int(LineType::Suggestive)]);
+            if (o.suggestive)
+                suggestive_segment(t, p, fields, q, 1.0f, o.sc_threshold, o.fade, lines[int(LineType::Suggestive)]);
+            if (o.suggestive_highlights)
+                suggestive_segment(t, p, fields, q, -1.0f, o.sh_threshold, o.fade,
+                                   lines[int(LineType::SuggestiveHighlight)]);
+            if (o.dwkr) dwkr_segment(t, p, fields, q, o.sc_threshold, lines[int(LineType::Dwkr)]);
         }
+    extract_curvature_lines(mesh, fields, o, lines);
+    extract_level_lines(mesh, fields, o, lines);
     if (o.boundaries)
         for (const glm::uvec2& e : boundary_edges(mesh, fields.flags)) {
             const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];

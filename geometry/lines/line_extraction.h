@@ -29,10 +29,18 @@
 
 namespace kappa {
 
-// Hatching is a kind of stroke too (render/hatch_streamlines.h); extract_lines never makes it.
-enum class LineType : int { Contour, Suggestive, Boundary, Crease, Hatching };
-constexpr int kLineTypeCount = 5;
-// "contours", "suggestive", "boundaries", "creases" (as in --lines), "hatching"
+// The --lines types drawn as strokes, by their --lines names. Hatching is a
+// kind of stroke too (render/hatch_streamlines.h); extract_lines never makes it.
+enum class LineType : int {
+    Contour, Suggestive, Boundary, Crease,
+    SuggestiveHighlight, Dwkr,                   // view-dependent, here
+    Ridge, Valley, Parabolic, MeanZero,          // view-independent (curvature_lines.h)
+    Isophote, Topo,                              // level lines (level_lines.h)
+    Hatching
+};
+constexpr int kLineTypeCount = 13;
+// "contours", "suggestive", "boundaries", "creases", "suggestive-highlights", "dwkr", "ridges",
+// "valleys", "parabolic", "mean-zero", "isophotes", "topo" (as in --lines), "hatching"
 const char* line_type_name(LineType type);
 
 struct LineSegment {
@@ -45,9 +53,21 @@ struct LineSegment {
 
 struct LineExtractionOptions {
     bool contours = true, suggestive = true, boundaries = false, creases = true;
+    bool suggestive_highlights = false, dwkr = false;
+    bool ridges = false, valleys = false, parabolic = false, mean_zero = false;
+    bool isophotes = false, topo = false;
     bool hidden_creases = false;  // every crease, also those turned away (--hidden-lines)
-    float sc_threshold = 0.05f;   // dimensionless s
-    bool fade = true;
+    float sc_threshold = 0.05f;   // dimensionless s: suggestive contours (Dw kr fs^2 > s) and dwkr (= s)
+    float sh_threshold = 0.1f;    // dimensionless: suggestive highlights where -Dw kr fs^2 > it
+    float rv_threshold = 1.5f;    // dimensionless: ridges and valleys where |kmax| > it / fs
+    float feature_size = 1;       // fs
+    bool fade = true;             // suggestive contours and highlights, ridges and valleys
+    // Level lines: isophotes n.l = (k - 1/2) / N, k = 1..N, for the light direction (model
+    // coordinates, unit); topographic lines at `topo_count` heights along y, from topo_first by topo_step.
+    glm::vec3 light{0, 0, 1};
+    int isophote_count = 4;
+    float topo_first = 0, topo_step = 1;
+    int topo_count = 12;
 };
 
 // A sharp edge (geometry/creases.h) with the unit normals of its two faces.
