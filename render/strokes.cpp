@@ -110,6 +110,8 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
     options.ridges = lines.ridges, options.valleys = lines.valleys;
     options.parabolic = lines.parabolic, options.mean_zero = lines.mean_zero;
     options.isophotes = lines.isophotes, options.topo = lines.topo;
+    options.apparent_ridges = lines.apparent_ridges, options.principal_highlights = lines.principal_highlights;
+    options.ar_threshold = settings.ar_threshold, options.ph_threshold = settings.ph_threshold;
     options.hidden_creases = settings.hidden_lines;
     options.sc_threshold = settings.sc_threshold;
     options.sh_threshold = settings.sh_threshold;

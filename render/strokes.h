@@ -45,9 +45,8 @@ struct SurfaceDepth {
     std::vector<float> depth;  // window depth, bottom row first; 1 = background
 };
 
-// Visible strokes of the line types selected in settings that have a CPU
-// extractor (geometry/lines: all but apparent ridges and principal
-// highlights; silhouette draws all contours),
+// Visible strokes of the line types selected in settings (geometry/lines;
+// silhouette draws all contours),
 // seen by `camera` over an image of the depth's size. bounds: the mesh's
 // bounding sphere (the projection's near and far planes, as the renderer).
 std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& camera, const BoundingSphere& bounds,

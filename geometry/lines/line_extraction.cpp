@@ -3,6 +3,7 @@
 #include "geometry/creases.h"
 #include "geometry/lines/curvature_lines.h"
 #include "geometry/lines/level_lines.h"
+#include "geometry/lines/view_ridges.h"
 #include "geometry/lines/zero_crossings.h"
 #include "geometry/surface_fields.h"
 #include "geometry/vertex_flags.h"
@@ -82,6 +83,8 @@ const char* line_type_name(LineType type) {
     case LineType::MeanZero: return "mean-zero";
     case LineType::Isophote: return "isophotes";
     case LineType::Topo: return "topo";
+    case LineType::ApparentRidge: return "apparent-ridges";
+    case LineType::PrincipalHighlight: return "principal-highlights";
     case LineType::Hatching: return "hatching";
     }
     return "";
@@ -137,6 +140,12 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
         }
     extract_curvature_lines(mesh, fields, o, lines);
     extract_level_lines(mesh, fields, o, lines);
+    ViewRidgeOptions vr;
+    vr.apparent_ridges = o.apparent_ridges, vr.principal_highlights = o.principal_highlights;
+    vr.ar_threshold = o.ar_threshold, vr.ph_threshold = o.ph_threshold;
+    vr.feature_size = o.feature_size, vr.fade = o.fade;
+    extract_view_ridges(mesh, fields, eye, vr, lines[int(LineType::ApparentRidge)],
+                        lines[int(LineType::PrincipalHighlight)]);
     if (o.boundaries)
         for (const glm::uvec2& e : boundary_edges(mesh, fields.flags)) {
             const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];

@@ -36,11 +36,13 @@ enum class LineType : int {
     SuggestiveHighlight, Dwkr,                   // view-dependent, here
     Ridge, Valley, Parabolic, MeanZero,          // view-independent (curvature_lines.h)
     Isophote, Topo,                              // level lines (level_lines.h)
+    ApparentRidge, PrincipalHighlight,           // view-dependent (view_ridges.h)
     Hatching
 };
-constexpr int kLineTypeCount = 13;
+constexpr int kLineTypeCount = 15;
 // "contours", "suggestive", "boundaries", "creases", "suggestive-highlights", "dwkr", "ridges",
-// "valleys", "parabolic", "mean-zero", "isophotes", "topo" (as in --lines), "hatching"
+// "valleys", "parabolic", "mean-zero", "isophotes", "topo", "apparent-ridges",
+// "principal-highlights" (as in --lines), "hatching"
 const char* line_type_name(LineType type);
 
 struct LineSegment {
@@ -56,6 +58,9 @@ struct LineExtractionOptions {
     bool suggestive_highlights = false, dwkr = false;
     bool ridges = false, valleys = false, parabolic = false, mean_zero = false;
     bool isophotes = false, topo = false;
+    bool apparent_ridges = false, principal_highlights = false;
+    float ar_threshold = 1.0f;    // dimensionless: apparent ridges where sqrt(q1) fs > it
+    float ph_threshold = 0.2f;    // dimensionless: principal highlights where (kmax^2 - kmin^2) n.v fs^2 > it
     bool hidden_creases = false;  // every crease, also those turned away (--hidden-lines)
     float sc_threshold = 0.05f;   // dimensionless s: suggestive contours (Dw kr fs^2 > s) and dwkr (= s)
     float sh_threshold = 0.1f;    // dimensionless: suggestive highlights where -Dw kr fs^2 > it
