@@ -36,17 +36,25 @@ void write_pdf(const std::string& path, const VectorDrawing& d) {
     cairo_set_line_width(cr, d.line_width);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    for (const LineType type : layer_order())
-        for (const Stroke& s : d.strokes) {
-            if (s.type != type) continue;
-            for (const StrokePiece& piece : stroke_pieces(s, d)) {
-                cairo_set_line_width(cr, piece.width);
-                cairo_set_source_rgba(cr, d.line_color.r, d.line_color.g, d.line_color.b, piece.opacity);
-                cairo_move_to(cr, piece.points[0].x, piece.points[0].y);
-                for (size_t i = 1; i < piece.points.size(); ++i) cairo_line_to(cr, piece.points[i].x, piece.points[i].y);
-                cairo_stroke(cr);
-            }
+    // Hidden parts first (dashed 6 on 4, at 35% ink), then the line types in layer order.
+    auto draw = [&](const Stroke& s) {
+        for (const StrokePiece& piece : stroke_pieces(s, d)) {
+            cairo_set_line_width(cr, piece.width);
+            cairo_set_source_rgba(cr, d.line_color.r, d.line_color.g, d.line_color.b,
+                                  piece.opacity * (s.hidden ? 0.35 : 1.0));
+            cairo_move_to(cr, piece.points[0].x, piece.points[0].y);
+            for (size_t i = 1; i < piece.points.size(); ++i) cairo_line_to(cr, piece.points[i].x, piece.points[i].y);
+            cairo_stroke(cr);
         }
+    };
+    const double dash[] = {6.0, 4.0};
+    cairo_set_dash(cr, dash, 2, 0);
+    for (const Stroke& s : d.strokes)
+        if (s.hidden) draw(s);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    for (const LineType type : layer_order())
+        for (const Stroke& s : d.strokes)
+            if (s.type == type && !s.hidden) draw(s);
     cairo_destroy(cr);
     cairo_surface_finish(surface);
     const cairo_status_t status = cairo_surface_status(surface);

@@ -47,6 +47,7 @@ std::vector<Stroke> inked_parts(const Stroke& s) {
     std::vector<Stroke> parts;
     Stroke run;
     run.type = s.type;
+    run.hidden = s.hidden;
     auto flush = [&] {
         if (run.points.size() >= 2) parts.push_back(run);
         run.points.clear(), run.opacity.clear();
@@ -86,7 +87,7 @@ std::vector<Stroke> join_touching(std::vector<Stroke> strokes, float radius) {
         for (glm::vec2 p : {start_of(strokes[i]), end_of(strokes[i])}) ends[cell(p)].push_back(i);
     std::vector<char> alive(strokes.size(), 1);
     // Another live path of a's type with an end within radius of p; reversed so that it starts there.
-    auto take_near = [&](size_t a, LineType type, glm::vec2 p, Stroke& out) {
+    auto take_near = [&](size_t a, LineType type, bool hidden, glm::vec2 p, Stroke& out) {
         const glm::ivec2 c(glm::floor(p / radius));
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
@@ -94,7 +95,7 @@ std::vector<Stroke> join_touching(std::vector<Stroke> strokes, float radius) {
                 const auto it = ends.find(uint64_t(uint32_t(n.x)) << 32 | uint32_t(n.y));
                 if (it == ends.end()) continue;
                 for (size_t b : it->second) {
-                    if (b == a || !alive[b] || strokes[b].type != type) continue;
+                    if (b == a || !alive[b] || strokes[b].type != type || strokes[b].hidden != hidden) continue;
                     const bool at_start = glm::distance(start_of(strokes[b]), p) <= radius;
                     if (!at_start && glm::distance(end_of(strokes[b]), p) > radius) continue;
                     alive[b] = 0;
@@ -112,7 +113,7 @@ std::vector<Stroke> join_touching(std::vector<Stroke> strokes, float radius) {
         Stroke path = std::move(strokes[a]);
         for (int side = 0; side < 2; ++side) {
             Stroke next;
-            while (take_near(a, path.type, end_of(path), next)) {
+            while (take_near(a, path.type, path.hidden, end_of(path), next)) {
                 path.points.insert(path.points.end(), next.points.begin(), next.points.end());
                 path.opacity.insert(path.opacity.end(), next.opacity.begin(), next.opacity.end());
             }
@@ -180,7 +181,8 @@ std::vector<Stroke> plotter_paths(std::vector<Stroke> strokes, float radius) {
     for (size_t i : order) {
         const Stroke& s = inked[i];
         Stroke run;
-    run.type = s.type;
+        run.type = s.type;
+        run.hidden = s.hidden;
         std::vector<Stroke> runs;
         for (size_t k = 0; k < s.points.size(); ++k) {
             if (grid.near_other(s.points[k], i)) {

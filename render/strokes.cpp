@@ -32,6 +32,11 @@ class DepthTest {
 public:
     DepthTest(const SurfaceDepth& d, const glm::mat4& projection) : d_(d), p22_(projection[2][2]), p32_(projection[3][2]) {}
 
+    // Whether the pixel at q (clamped to the image) shows the background.
+    bool background(glm::vec2 q) const {
+        return at(std::clamp(int(std::floor(q.x)), 0, d_.width - 1), std::clamp(int(std::floor(q.y)), 0, d_.height - 1)) >= 1.0f;
+    }
+
     bool visible(glm::vec2 q, float line_depth, float tolerance) const {
         const int x = std::clamp(int(std::floor(q.x)), 0, d_.width - 1);
         const int y = std::clamp(int(std::floor(q.y)), 0, d_.height - 1);
@@ -52,11 +57,21 @@ private:
     float p22_, p32_;
 };
 
-// Cuts one path into its visible runs, appended to `out` in image coordinates.
+struct RunOptions {
+    float scale_tolerance = 0;   // per unit of camera distance (--detail)
+    bool hidden_lines = false;   // also the hidden runs
+    bool exterior_only = false;  // only where background lies beside the line
+    float line_width = 2;
+};
+
+// Cuts one path into its visible runs (and hidden ones when asked), appended
+// to `out` in image coordinates.
 void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm::vec2 viewport, const DepthTest& test,
-                  float scale_tolerance, std::vector<Stroke>& out) {
+                  const RunOptions& o, std::vector<Stroke>& out) {
     Stroke run;
     run.type = type;
+    enum State { kNone, kVisible, kHidden };
+    State state = kNone;
     auto image_point = [&](glm::vec2 window) { return glm::vec2(window.x, viewport.y - window.y); };
     auto close_run = [&] {
         if (run.points.size() >= 2) out.push_back(run);
@@ -72,9 +87,12 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
         const WindowPoint b = to_window(mvp, line.points[i + 1], viewport);
         if (a.w <= 0 || b.w <= 0) {  // behind the eye: not drawn (as emit_segment)
             close_run();
+            state = kNone;
             continue;
         }
-        const float tolerance = std::max(line.tolerance, scale_tolerance * std::max(a.w, b.w));
+        const float tolerance = std::max(line.tolerance, o.scale_tolerance * std::max(a.w, b.w));
+        const glm::vec2 along = glm::distance(a.xy, b.xy) > 1e-6f ? glm::normalize(b.xy - a.xy) : glm::vec2(1, 0);
+        const glm::vec2 side(-along.y, along.x);
         const float oa = line.opacity[i], ob = line.opacity[i + 1];
         const float sa = line.strength[i], sb = line.strength[i + 1];
         // Samples every half pixel, both ends included.
@@ -82,13 +100,21 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
         for (int k = 0; k <= steps; ++k) {
             const float t = float(k) / float(steps);
             const glm::vec2 q = a.xy + (b.xy - a.xy) * t;
-            const bool seen = test.visible(q, a.depth + (b.depth - a.depth) * t, tolerance);
-            if (seen) {
-                // Keep the path's own vertices and the points where visibility changes.
-                if (k == 0 || k == steps || run.points.empty()) add(q, oa + (ob - oa) * t, sa + (sb - sa) * t);
-            } else if (!run.points.empty()) {
-                close_run();
+            State now = test.visible(q, a.depth + (b.depth - a.depth) * t, tolerance) ? kVisible : kHidden;
+            if (now == kHidden && !o.hidden_lines) now = kNone;
+            if (now == kVisible && o.exterior_only) {
+                const float reach = 0.5f * o.line_width + 2.0f;
+                if (!test.background(q + side * reach) && !test.background(q - side * reach)) now = kNone;
             }
+            if (now != state) {
+                // A change: the run so far ends here, and a new one starts here.
+                if (state != kNone) add(q, oa + (ob - oa) * t, sa + (sb - sa) * t);
+                close_run();
+                state = now;
+                run.hidden = state == kHidden;
+            }
+            // Keep the path's own vertices and the points where visibility changes.
+            if (state != kNone && (k == 0 || k == steps || run.points.empty())) add(q, oa + (ob - oa) * t, sa + (sb - sa) * t);
         }
     }
     close_run();
@@ -137,13 +163,17 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
     // contours may lie the detail scale behind the polygons.
     const float scale_tolerance =
         settings.detail > 0 ? settings.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y) : 0.0f;
+    RunOptions run_options;
+    run_options.hidden_lines = settings.hidden_lines;
+    run_options.line_width = settings.line_width;
     std::vector<Stroke> strokes;
     for (int type = 0; type < kLineTypeCount; ++type) {
         const bool isoline = type == int(LineType::Contour) || type == int(LineType::Suggestive) ||
                              type == int(LineType::SuggestiveHighlight) || type == int(LineType::Dwkr);
+        run_options.scale_tolerance = isoline ? scale_tolerance : 0.0f;
+        run_options.exterior_only = type == int(LineType::Contour) && lines.silhouette && !lines.contours;
         for (const Polyline& line : chain_segments(extracted[size_t(type)]))
-            visible_runs(line, LineType(type), frame.mvp, frame.viewport, test, isoline ? scale_tolerance : 0.0f,
-                         strokes);
+            visible_runs(line, LineType(type), frame.mvp, frame.viewport, test, run_options, strokes);
     }
     return strokes;
 }

@@ -25,6 +25,7 @@ struct Stroke {
     std::vector<glm::vec2> points;  // pixels: x right, y down, (0, 0) the image's top-left corner
     std::vector<float> opacity;     // per point, in [0, 1] (fading)
     std::vector<float> strength;    // per point: the test value fading uses (LineSegment::strength_a); may be empty
+    bool hidden = false;            // a hidden part (--hidden-lines): drawn dashed and light
     float width = 0;                // pixels; 0: the drawing's line width
     float taper = -1;               // pixels; < 0: the drawing's taper
 };
@@ -46,7 +47,9 @@ struct SurfaceDepth {
 };
 
 // Visible strokes of the line types selected in settings (geometry/lines;
-// silhouette draws all contours),
+// `silhouette` alone keeps the contours with background beside them, as
+// shaders/lines_frag.glsl; with --hidden-lines the hidden parts come too,
+// marked hidden),
 // seen by `camera` over an image of the depth's size. bounds: the mesh's
 // bounding sphere (the projection's near and far planes, as the renderer).
 std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& camera, const BoundingSphere& bounds,

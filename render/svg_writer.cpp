@@ -72,27 +72,36 @@ void write_svg(const std::string& path, const VectorDrawing& d) {
                      "<g inkscape:groupmode=\"layer\" id=\"surface\" inkscape:label=\"surface\">\n"
                      "<image width=\"%d\" height=\"%d\" xlink:href=\"data:image/png;base64,%s\"/>\n</g>\n",
                      d.width, d.height, base64(encode_png(*d.underlay)).c_str());
+    // Hidden parts first (under everything drawn), then a layer per line type.
+    auto write_paths = [&](const Stroke& s) {
+        for (const StrokePiece& piece : stroke_pieces(s, d)) {
+            std::fputs("<path d=\"M", f);
+            for (size_t i = 0; i < piece.points.size(); ++i)
+                std::fprintf(f, "%s%.2f %.2f", i == 1 ? " L" : " ", double(piece.points[i].x), double(piece.points[i].y));
+            if (piece.opacity < 1) std::fprintf(f, "\" stroke-opacity=\"%.4g", double(piece.opacity));
+            if (piece.width != d.line_width) std::fprintf(f, "\" stroke-width=\"%.4g", double(piece.width));
+            std::fputs("\"/>\n", f);
+        }
+    };
+    auto open_layer = [&](const char* name, const char* extra) {
+        std::fprintf(f,
+                     "<g inkscape:groupmode=\"layer\" id=\"%s\" inkscape:label=\"%s\" fill=\"none\" stroke=\"%s\" "
+                     "stroke-width=\"%g\" stroke-linecap=\"round\" stroke-linejoin=\"round\"%s>\n",
+                     name, name, hex_color(d.line_color).c_str(), double(d.line_width), extra);
+    };
+    bool opened = false;
+    for (const Stroke& s : d.strokes) {
+        if (!s.hidden) continue;
+        if (!opened) open_layer("hidden", " stroke-dasharray=\"6 4\" opacity=\"0.35\""), opened = true;
+        write_paths(s);
+    }
+    if (opened) std::fputs("</g>\n", f);
     for (const LineType type : layer_order()) {
-        bool opened = false;
+        opened = false;
         for (const Stroke& s : d.strokes) {
-            if (s.type != type) continue;
-            if (!opened) {
-                const char* name = line_type_name(type);
-                std::fprintf(f,
-                             "<g inkscape:groupmode=\"layer\" id=\"%s\" inkscape:label=\"%s\" fill=\"none\" "
-                             "stroke=\"%s\" stroke-width=\"%g\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n",
-                             name, name, hex_color(d.line_color).c_str(), double(d.line_width));
-                opened = true;
-            }
-            for (const StrokePiece& piece : stroke_pieces(s, d)) {
-                std::fputs("<path d=\"M", f);
-                for (size_t i = 0; i < piece.points.size(); ++i)
-                    std::fprintf(f, "%s%.2f %.2f", i == 1 ? " L" : " ", double(piece.points[i].x),
-                                 double(piece.points[i].y));
-                if (piece.opacity < 1) std::fprintf(f, "\" stroke-opacity=\"%.4g", double(piece.opacity));
-                if (piece.width != d.line_width) std::fprintf(f, "\" stroke-width=\"%.4g", double(piece.width));
-                std::fputs("\"/>\n", f);
-            }
+            if (s.type != type || s.hidden) continue;
+            if (!opened) open_layer(line_type_name(type), ""), opened = true;
+            write_paths(s);
         }
         if (opened) std::fputs("</g>\n", f);
     }

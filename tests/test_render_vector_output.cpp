@@ -132,3 +132,27 @@ TEST_CASE("Every line type comes out in SVG as in the PNG", "[render][cli][vecto
         check_agreement(raster, vector);
     }
 }
+
+TEST_CASE("SVG: silhouette alone and hidden lines as the PNG draws them", "[render][cli][vector]") {
+    {
+        INFO("--lines silhouette: the exterior outline only");
+        const auto [raster, vector] = png_and_vector(test::shared_mesh("bunny.ply"), "svg", "--shading none --lines silhouette");
+        check_agreement(raster, vector);
+    }
+    // Hidden parts: a layer of their own, dashed and light; the visible drawing is the same.
+    const std::string dir = test::temp_dir();
+    const std::string common = kappa_render(test::shared_mesh("fandisk.obj") + " -q --shading none --size 800x600");
+    REQUIRE(test::run_command(common + " -o " + dir + "/plain.svg").exit_code == 0);
+    REQUIRE(test::run_command(common + " --hidden-lines on -o " + dir + "/hidden.svg").exit_code == 0);
+    const std::string plain = test::read_file(dir + "/plain.svg"), hidden = test::read_file(dir + "/hidden.svg");
+    CHECK(plain.find("id=\"hidden\"") == std::string::npos);
+    const size_t layer = hidden.find("id=\"hidden\"");
+    REQUIRE(layer != std::string::npos);
+    const size_t layer_end = hidden.find("</g>", layer);
+    CHECK(hidden.find("stroke-dasharray=\"6 4\"", layer) < layer_end);
+    CHECK(hidden.find("<path", layer) < layer_end);  // fandisk has hidden edges
+    // The dashes are light (35% ink: not ink); the rest draws as without hidden lines.
+    REQUIRE(test::run_command("rsvg-convert " + dir + "/plain.svg -o " + dir + "/plain.png").exit_code == 0);
+    REQUIRE(test::run_command("rsvg-convert " + dir + "/hidden.svg -o " + dir + "/hidden.png").exit_code == 0);
+    check_agreement(render::read_png(dir + "/plain.png"), render::read_png(dir + "/hidden.png"));
+}
