@@ -156,3 +156,14 @@ TEST_CASE("SVG: silhouette alone and hidden lines as the PNG draws them", "[rend
     REQUIRE(test::run_command("rsvg-convert " + dir + "/hidden.svg -o " + dir + "/hidden.png").exit_code == 0);
     check_agreement(render::read_png(dir + "/plain.png"), render::read_png(dir + "/hidden.png"));
 }
+
+TEST_CASE("A turntable writes numbered SVG files, each a different view", "[render][cli][vector]") {
+    const std::string dir = test::temp_dir();
+    const auto r = test::run_command(kappa_render("-q --shading none --size 200x150 --turntable 3 -o " + dir + "/turn.svg"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const std::string a = test::read_file(dir + "/turn-000.svg"), b = test::read_file(dir + "/turn-001.svg");
+    CHECK(test::read_file(dir + "/turn-002.svg").find("<path") != std::string::npos);
+    CHECK(a.find("<path") != std::string::npos);
+    CHECK(a != b);
+}
