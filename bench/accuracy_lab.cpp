@@ -14,7 +14,7 @@
 // --quick: a quarter of the vertices. Noise: Gaussian displacement along the
 // true normal with sigma = 0..10% of the median edge length, errors averaged
 // over `trials` noise draws (and over patches for the cubic). Methods: the
-// five estimators and rusinkiewicz with --smooth auto. Errors: curvature as
+// five estimators, and rusinkiewicz and jet with --smooth auto. Errors: curvature as
 // in Fig. 8 (RMS normal-curvature error over directions and vertices over
 // the RMS normal curvature), C as the RMS norm of the error tensor over the
 // RMS |C|. Writes one CSV row per (surface, noise, method):
@@ -31,7 +31,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -55,25 +54,9 @@ std::vector<Method> methods() {
     SmoothingOptions automatic;
     automatic.automatic = true;
     out.push_back({"rusinkiewicz --smooth auto", automatic});
+    automatic.estimator = Estimator::jet;
+    out.push_back({"jet --smooth auto", automatic});
     return out;
-}
-
-float median_edge(const Mesh& m) {
-    std::vector<float> len;
-    len.reserve(m.faces.size() * 3);
-    for (const Face& f : m.faces)
-        for (int j = 0; j < 3; ++j) len.push_back(glm::length(m.positions[f[j]] - m.positions[f[(j + 1) % 3]]));
-    std::nth_element(len.begin(), len.begin() + len.size() / 2, len.end());
-    return len[len.size() / 2];
-}
-
-// Gaussian displacement along the true normal.
-AnalyticMesh with_noise(AnalyticMesh a, double sigma, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::normal_distribution<double> gauss(0.0, sigma);
-    for (size_t i = 0; i < a.mesh.positions.size(); ++i)
-        a.mesh.positions[i] += glm::vec3(float(gauss(rng)) * glm::vec3(a.normal[i]));
-    return a;
 }
 
 struct Surface {
@@ -121,9 +104,8 @@ int main(int argc, char** argv) {
             std::vector<double> ek(ms.size(), 0), ec(ms.size(), 0);
             const int n = noise > 0 || surface.name != "torus, uniform" ? trials : 1;
             for (int t = 0; t < n; ++t) {
-                AnalyticMesh clean = surface.make(t);
-                const float h = median_edge(clean.mesh);
-                const AnalyticMesh a = noise > 0 ? with_noise(clean, noise * h, 1000 + t) : clean;
+                const AnalyticMesh clean = surface.make(t);
+                const AnalyticMesh a = noise > 0 ? test::with_normal_noise(clean, noise, 1000 + t) : clean;
                 for (size_t m = 0; m < ms.size(); ++m) {
                     const SurfaceFields f = compute_surface_fields(a.mesh, ms[m].options);
                     ek[m] += test::relative_curvature_error(f, a) / n;

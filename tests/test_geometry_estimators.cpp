@@ -15,7 +15,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <random>
 
 using namespace kappa;
 using test::AnalyticMesh;
@@ -74,15 +73,6 @@ Inputs inputs(const Mesh& m) {
     in.normals = compute_vertex_normals(in.vf, in.faces);
     in.areas = compute_point_areas(in.vf, in.faces.corner_areas);
     return in;
-}
-
-AnalyticMesh with_noise(AnalyticMesh a, double eta, uint32_t seed) {
-    const float h = compute_surface_fields(a.mesh, SmoothingOptions{0, 0, 0, true}).noise.median_edge;
-    std::mt19937 rng(seed);
-    std::normal_distribution<double> gauss(0.0, eta * h);
-    for (size_t i = 0; i < a.mesh.positions.size(); ++i)
-        a.mesh.positions[i] += glm::vec3(float(gauss(rng)) * glm::vec3(a.normal[i]));
-    return a;
 }
 
 }  // namespace
@@ -196,7 +186,7 @@ TEST_CASE("On clean irregular meshes the jet is the most accurate estimator, cur
 TEST_CASE("With noise the jet grows its rings: no worse than a 3-ring jet", "[estimators][jet][noise]") {
     // 2% of the median edge along the normal (the issue's criterion); measured
     // curvature error: adaptive (5 rings) 0.094, 3-ring 0.40, 2-ring 1.5.
-    const AnalyticMesh a = with_noise(test::analytic_torus(1, 0.4, 200, 100, 0.3, 7), 0.02, 8);
+    const AnalyticMesh a = test::with_normal_noise(test::analytic_torus(1, 0.4, 200, 100, 0.3, 7), 0.02, 8);
     const Inputs in = inputs(a.mesh);
     const EstimatorInput input{a.mesh, in.vf, in.faces, in.normals, in.areas};
     JetOptions three;

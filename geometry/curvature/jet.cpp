@@ -159,20 +159,24 @@ CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& optio
     const int base_rings = plan.rings;
     const int max_rings = std::max(base_rings, options.max_rings);
     const VertexAdjacency adj = build_vertex_adjacency(in.mesh, in.vf);
-    CurvatureEstimate out;
+    CurvatureEstimate out = empty_estimate(nv, true);
     out.normals = in.normals;
-    out.tensors.tensor.assign(nv, Tensor2{});
-    out.dcurv_uv.assign(nv, glm::vec4(0.0f));
-    out.flags.assign(nv, 0);
     parallel_for_ranges(nv, [&](size_t begin, size_t end) {
         RingCollector rings(nv);
+        std::vector<uint32_t> ring;
         for (size_t v = begin; v < end; ++v) {
-            const std::vector<uint32_t>& ring = rings.collect(adj, uint32_t(v), base_rings);
-            for (int r = base_rings; ring.size() < points_needed(degree) && r < max_rings;) {
-                const size_t before = ring.size();
+            const std::vector<uint32_t>& all = rings.collect(adj, uint32_t(v), base_rings);
+            for (int r = base_rings; all.size() < points_needed(degree) && r < max_rings;) {
+                const size_t before = all.size();
                 r = rings.grow(adj);
-                if (ring.size() == before) break;
+                if (all.size() == before) break;
             }
+            // The surface is a height function over the tangent plane only on
+            // this side: a ring that wraps round a thin part (an ear) reaches
+            // points facing away, which are left out.
+            ring.clear();
+            for (uint32_t q : all)
+                if (q == v || glm::dot(in.normals[q], in.normals[v]) > 0.0f) ring.push_back(q);
             VertexJet jet;
             if (!fit_vertex(in.mesh, ring, glm::dvec3(in.normals[v]), degree, jet)) {
                 out.flags[v] = kFlagFallback;

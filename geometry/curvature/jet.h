@@ -13,8 +13,11 @@
 // normal is more than 5 degrees from the frame's axis (a poor vertex normal)
 // the fit is repeated in the jet normal's frame.
 //
+// Ring vertices whose Max normal faces away from the vertex's (a ring that
+// wraps round a thin part) are left out of the fit.
+//
 // Inputs: the mesh, its vertex faces and the Max normals (they give the
-// fitting frame only). Outputs (estimate.h): the jet's normal, II and C per
+// fitting frame and the side test only). Outputs (estimate.h): the jet's normal, II and C per
 // vertex, all three native.
 //
 // Degree and rings (JetOptions 0 = automatic) follow the mesh's noise level
