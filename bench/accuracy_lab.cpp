@@ -17,7 +17,7 @@
 // five estimators, and rusinkiewicz and jet with --smooth auto. Errors: curvature as
 // in Fig. 8 (RMS normal-curvature error over directions and vertices over
 // the RMS normal curvature), C as the RMS norm of the error tensor over the
-// RMS |C|. Writes one CSV row per (surface, noise, method):
+// RMS |C|. Writes one CSV row per (surface, noise, method), names quoted:
 //   surface,noise,method,curvature_error,dcurv_error
 // scripts/accuracy-lab.sh runs it and plots the CSV (scripts/plot_accuracy.py).
 #include "tests/analytic_curvature.h"
@@ -113,8 +113,8 @@ int main(int argc, char** argv) {
                 }
             }
             for (size_t m = 0; m < ms.size(); ++m) {
-                std::fprintf(out, "%s,%g,%s,%.6g,%.6g\n", surface.name.c_str(), noise, ms[m].name.c_str(), ek[m],
-                             ec[m]);
+                std::fprintf(out, "\"%s\",%g,\"%s\",%.6g,%.6g\n", surface.name.c_str(), noise, ms[m].name.c_str(),
+                             ek[m], ec[m]);
                 std::printf("%-18s noise %4.2f  %-28s curvature %10.6f  C %10.6f\n", surface.name.c_str(), noise,
                             ms[m].name.c_str(), ek[m], ec[m]);
             }

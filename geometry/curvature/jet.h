@@ -34,6 +34,13 @@
 // near where the sums cross, kept clear of the noise estimate's floor on
 // clean meshes (about 1e-4).
 //
+// On clean meshes the other limit is the positions' float rounding (about
+// 6e-8 of the coordinates): where a fit's RMS residual is no larger than
+// rounding alone leaves (flat regions, fine tessellations) the ring grows by
+// one and the vertex is fitted again, which averages rounding down
+// (automatic rings only). Measured (accuracy lab meshes): cubic patches
+// 0.0046% / 0.43% (curvature / C) -> 0.0018% / 0.14%; the tori unchanged.
+//
 // Where the neighbourhood is too small for the degree (fewer than unknowns +
 // 3 points: boundaries, small components) it is grown by one ring, up to
 // `max_rings`; if that is not enough, or the points are degenerate (the
