@@ -25,6 +25,9 @@ constexpr double kPivotTolerance = 1e-11;
 // cos(5 degrees): jet normals further than this from the fitting frame's
 // axis are fitted again in their own frame.
 constexpr float kRefitCosine = 0.9962f;
+// cos(60 degrees): ring vertices whose normal is further than this from the
+// vertex's are left out (beyond, the height function's slope exceeds 1.7).
+constexpr float kSideCosine = 0.5f;
 // Half a float ulp relative to a coordinate: the largest rounding of a
 // position. Rounding alone leaves an RMS fit residual of about 0.3 to 0.4
 // times that (uniform rounding error, ulp / sqrt(12), less the fitted
@@ -177,15 +180,16 @@ CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& optio
     parallel_for_ranges(nv, [&](size_t begin, size_t end) {
         RingCollector rings(nv);
         std::vector<uint32_t> ring;
-        // Fits vertex v over `all` less the vertices facing away (the surface
-        // is a height function over the tangent plane only on this side: a
-        // ring that wraps round a thin part, an ear, reaches the other side);
+        // Fits vertex v over `all` less the vertices facing away by more than
+        // 60 degrees (the surface is a usable height function over the
+        // tangent plane only there: a ring that wraps round a thin part, an
+        // ear, reaches the other side);
         // again in the jet normal's frame where the vertex normal was more
         // than 5 degrees off (a poor normal, e.g. at folded triangles).
         const auto fit_ring = [&](const std::vector<uint32_t>& all, size_t v, VertexJet& jet) {
             ring.clear();
             for (uint32_t q : all)
-                if (q == v || glm::dot(in.normals[q], in.normals[v]) > 0.0f) ring.push_back(q);
+                if (q == v || glm::dot(in.normals[q], in.normals[v]) > kSideCosine) ring.push_back(q);
             if (!fit_vertex(in.mesh, ring, glm::dvec3(in.normals[v]), degree, jet)) return false;
             for (int again = 0; options.refit && again < 2 && glm::dot(jet.normal, in.normals[v]) < kRefitCosine;
                  ++again) {

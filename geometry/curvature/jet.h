@@ -13,8 +13,10 @@
 // normal is more than 5 degrees from the frame's axis (a poor vertex normal)
 // the fit is repeated in the jet normal's frame.
 //
-// Ring vertices whose Max normal faces away from the vertex's (a ring that
-// wraps round a thin part) are left out of the fit.
+// Ring vertices whose Max normal is more than 60 degrees from the vertex's (a
+// ring that wraps round a thin part) are left out of the fit. Limitation: on
+// noisy scans, features narrower than the noise-adapted ring (the bunny's
+// ear rims) still give outliers, up to ten times the paper's 1-ring value.
 //
 // Inputs: the mesh, its vertex faces and the Max normals (they give the
 // fitting frame and the side test only). Outputs (estimate.h): the jet's normal, II and C per
