@@ -14,6 +14,15 @@
 #include <algorithm>
 #include <cmath>
 
+// The moment loops have constant bounds; unrolled they run about twice as fast.
+#if defined(__clang__)
+#define KAPPA_UNROLL _Pragma("unroll")
+#elif defined(__GNUC__)
+#define KAPPA_UNROLL _Pragma("GCC unroll 16")
+#else
+#define KAPPA_UNROLL
+#endif
+
 namespace kappa {
 
 namespace {
@@ -87,14 +96,21 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
         const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
         double px[2 * Top + 1], py[2 * Top + 1];
         px[0] = py[0] = 1;
+        KAPPA_UNROLL
         for (int i = 1; i <= 2 * Top; ++i) {
             px[i] = px[i - 1] * x;
             py[i] = py[i - 1] * y;
         }
-        for (int i = 0; i <= 2 * Top; ++i)
+        KAPPA_UNROLL
+        for (int i = 0; i <= 2 * Top; ++i) {
+            KAPPA_UNROLL
             for (int j = 0; j + i <= 2 * Top; ++j) moment[i][j] += px[i] * py[j];
-        for (int i = 0; i <= Top; ++i)
+        }
+        KAPPA_UNROLL
+        for (int i = 0; i <= Top; ++i) {
+            KAPPA_UNROLL
             for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
+        }
         zz += z * z;
     }
     NormalEquations<kUnknowns> eq;
