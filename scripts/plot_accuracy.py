@@ -36,7 +36,7 @@ def read(path):
 
 def plot(surfaces, methods, rows, out_dir):
     fig, axes = plt.subplots(2, len(surfaces), figsize=(4.2 * len(surfaces), 7.5), squeeze=False)
-    styles = ["-o", "-s", "-^", "-v", "-D", "--x", "--+"]
+    styles = ["-o", "-s", "-^", "-v", "-D", "--x", "--+", ":.", ":1"]
     for col, s in enumerate(surfaces):
         for row, (label, k) in enumerate((("curvature error", 0), ("C error", 1))):
             ax = axes[row][col]
