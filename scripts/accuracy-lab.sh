@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The accuracy lab (README, "Curvature estimators"): the paper's Fig. 8 for
 # every estimator from exact analytic truth. Builds bench/accuracy_lab.cpp,
-# runs it (3.5 minutes on 2 busy cores) and plots with scripts/plot_accuracy.py
+# runs it (about 4 minutes on 2 busy cores) and plots with scripts/plot_accuracy.py
 # (Debian: python3-matplotlib) into docs/accuracy/: fig8.png, fig8.svg,
 # table.md and the raw accuracy.csv.
 #
