@@ -59,7 +59,9 @@ int run_curvature(int argc, char** argv) {
                 "  x,y,z,nx,ny,nz,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,a,b,c,d\n"
                 "k1 >= k2 (signed, convex positive), d1 x d2 = n, (a,b,c,d) = (C111,C112,C122,C222) in the\n"
                 "(d1,d2) frame. The PLY output carries the same values as vertex properties, plus 'flags'\n"
-                "(1 isolated, 2 degenerate, 4 boundary, 8 non-manifold).\n"
+                "(1 isolated, 2 degenerate, 4 boundary, 8 non-manifold, 16 estimator fallback).\n"
+                "--estimator jet is the most accurate (a noise-adaptive osculating jet); the others are the\n"
+                "paper's comparison methods (README, 'Curvature estimators').\n"
                 "Smoothing is off by default (the raw estimate, reproducible). For scans and other noisy\n"
                 "meshes use --smooth auto: it estimates the noise and chooses the widths, printed in the\n"
                 "summary and written in the PLY header (README, 'kappa curvature').\n"
@@ -121,6 +123,8 @@ int run_curvature(int argc, char** argv) {
         if (fields.smoothing.automatic)
             std::printf("  noise level %.6g (%.4g median edges of %.6g), estimated from %zu vertices\n",
                         fields.noise.sigma, fields.noise.relative, fields.noise.median_edge, fields.noise.samples);
+        if (fields.smoothing.estimator != Estimator::rusinkiewicz)
+            std::printf("  estimator %s\n", estimator_name(fields.smoothing.estimator).c_str());
         std::printf("  smoothing widths%s: normals %.6g, curvature %.6g, dcurv %.6g\n",
                     fields.smoothing.automatic ? " (auto)" : "", fields.smoothing.normals, fields.smoothing.curvature,
                     fields.smoothing.dcurv);

@@ -479,3 +479,26 @@ TEST_CASE("Lines silhouette: the whole exterior outline and no interior contour"
     CHECK(ink_off_outline < ink / 100);
     CHECK(test::count_ink(con) > ink + 200);  // the interior contours (ears, legs) left out
 }
+
+TEST_CASE("kappa render --estimator colours the surface with that estimator's own fields", "[render][cli][estimators]") {
+    const std::string dir = test::temp_dir();
+    auto render_with = [&](const std::string& estimator) {
+        const std::string out = dir + "/" + estimator + ".png";
+        const auto r = test::run_command(kappa_render("-o " + out + " --size 96x96 --colormap k1 --lines none -q " +
+                                                      "--detail off --estimator " + estimator));
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+        return render::read_png(out);
+    };
+    const render::Image paper = render_with("rusinkiewicz");
+    for (const char* name : {"jet", "tensor-averaging", "normal-fit", "points-normals-fit"}) {
+        INFO(name);
+        const render::Image other = render_with(name);
+        REQUIRE(other.pixels.size() == paper.pixels.size());
+        CHECK(other.pixels != paper.pixels);       // the colours come from another estimate
+        CHECK(other.at(48, 48).a == 255);          // and the model is drawn
+    }
+    const auto bad = test::run_command(kappa_render("-o " + dir + "/x.png --estimator cgal"));
+    CHECK(bad.exit_code == 2);
+    CHECK(test::count_lines(bad.output) == 1);
+}

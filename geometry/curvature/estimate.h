@@ -51,6 +51,17 @@ struct CurvatureEstimate {
 
 namespace kappa {
 
+// An estimate for nv vertices with zero tensors, no flags, and zero C when
+// `with_dcurv` (estimators fill it in).
+CurvatureEstimate empty_estimate(size_t nv, bool with_dcurv);
+
+// Vertex v's position and the frame (u, w, n) of its input normal, n =
+// u x w, u and w from tangent_frame: the frame the fits work in.
+struct VertexFrame {
+    glm::dvec3 p, u, w, n;
+};
+VertexFrame vertex_frame(const EstimatorInput& in, size_t v);
+
 enum class Estimator;
 
 // Runs one of the estimators above (not Estimator::rusinkiewicz, which the

@@ -14,6 +14,15 @@
 #include <algorithm>
 #include <cmath>
 
+// The moment loops have constant bounds; unrolled they run about twice as fast.
+#if defined(__clang__)
+#define KAPPA_UNROLL _Pragma("unroll")
+#elif defined(__GNUC__)
+#define KAPPA_UNROLL _Pragma("GCC unroll 16")
+#else
+#define KAPPA_UNROLL
+#endif
+
 namespace kappa {
 
 namespace {
@@ -25,6 +34,16 @@ constexpr double kPivotTolerance = 1e-11;
 // cos(5 degrees): jet normals further than this from the fitting frame's
 // axis are fitted again in their own frame.
 constexpr float kRefitCosine = 0.9962f;
+// cos(60 degrees): ring vertices whose normal is further than this from the
+// vertex's are left out (beyond, the height function's slope exceeds 1.7).
+constexpr float kSideCosine = 0.5f;
+// Half a float ulp relative to a coordinate: the largest rounding of a
+// position. Rounding alone leaves an RMS fit residual of about 0.3 to 0.4
+// times that (uniform rounding error, ulp / sqrt(12), less the fitted
+// degrees of freedom); below kRoundingResidual times it, the fit is
+// rounding-limited.
+constexpr double kFloatRounding = 6e-8;
+constexpr double kRoundingResidual = 0.3;
 
 // Unknowns of a degree-d jet: 6, 10, 15, 21 for d = 2, 3, 4, 5.
 int coefficient_count(int degree) { return (degree + 1) * (degree + 2) / 2; }
@@ -44,6 +63,7 @@ struct VertexJet {
     Tensor2 tensor;
     glm::vec4 dcurv{0.0f};
     bool full = false;  // degree 4 (or the degree asked for, if lower) on a sufficient neighbourhood
+    double residual = 0;  // RMS height residual of the fit, model units
 };
 
 // Fits the jet of vertex v over `ring` (v first) in the frame (u, w, n) and
@@ -70,22 +90,31 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
     // i + j <= 2 degree (45 for degree 4), and A^T z the sums z x^i y^j,
     // i + j <= degree: accumulating those costs a third of the row-by-row
     // products.
-    double moment[2 * Top + 1][2 * Top + 1] = {}, zmoment[Top + 1][Top + 1] = {};
+    double moment[2 * Top + 1][2 * Top + 1] = {}, zmoment[Top + 1][Top + 1] = {}, zz = 0;
     for (uint32_t q : ring) {
         const glm::dvec3 d = (glm::dvec3(mesh.positions[q]) - p0) * inv;
         const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
         double px[2 * Top + 1], py[2 * Top + 1];
         px[0] = py[0] = 1;
+        KAPPA_UNROLL
         for (int i = 1; i <= 2 * Top; ++i) {
             px[i] = px[i - 1] * x;
             py[i] = py[i - 1] * y;
         }
-        for (int i = 0; i <= 2 * Top; ++i)
+        KAPPA_UNROLL
+        for (int i = 0; i <= 2 * Top; ++i) {
+            KAPPA_UNROLL
             for (int j = 0; j + i <= 2 * Top; ++j) moment[i][j] += px[i] * py[j];
-        for (int i = 0; i <= Top; ++i)
+        }
+        KAPPA_UNROLL
+        for (int i = 0; i <= Top; ++i) {
+            KAPPA_UNROLL
             for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
+        }
+        zz += z * z;
     }
     NormalEquations<kUnknowns> eq;
+    eq.set_btb(zz);
     for (int a = 0; a < kUnknowns; ++a) {
         eq.set_rhs(a, zmoment[kPowerX[a]][kPowerY[a]]);
         for (int b = a; b < kUnknowns; ++b) eq.set(a, b, moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
@@ -100,6 +129,8 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
         }
     }
     if (used == 0) return false;
+    const int k = coefficient_count(used);
+    out.residual = ring.size() > size_t(k) ? std::sqrt(eq.residual(c, k) / double(ring.size() - k)) * scale : 0.0;
     // Derivatives at the origin in model units: f(x) = scale f'(x / scale).
     HeightDerivatives h;
     h.fx = c[1];
@@ -159,28 +190,23 @@ CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& optio
     const int base_rings = plan.rings;
     const int max_rings = std::max(base_rings, options.max_rings);
     const VertexAdjacency adj = build_vertex_adjacency(in.mesh, in.vf);
-    CurvatureEstimate out;
+    CurvatureEstimate out = empty_estimate(nv, true);
     out.normals = in.normals;
-    out.tensors.tensor.assign(nv, Tensor2{});
-    out.dcurv_uv.assign(nv, glm::vec4(0.0f));
-    out.flags.assign(nv, 0);
+    const bool grow_when_exact = options.rings <= 0;
     parallel_for_ranges(nv, [&](size_t begin, size_t end) {
         RingCollector rings(nv);
-        for (size_t v = begin; v < end; ++v) {
-            const std::vector<uint32_t>& ring = rings.collect(adj, uint32_t(v), base_rings);
-            for (int r = base_rings; ring.size() < points_needed(degree) && r < max_rings;) {
-                const size_t before = ring.size();
-                r = rings.grow(adj);
-                if (ring.size() == before) break;
-            }
-            VertexJet jet;
-            if (!fit_vertex(in.mesh, ring, glm::dvec3(in.normals[v]), degree, jet)) {
-                out.flags[v] = kFlagFallback;
-                continue;
-            }
-            // A frame far from the jet's normal (a poor vertex normal, e.g.
-            // at folded triangles) makes the height function a poor model:
-            // fit again in the frame of the jet's own normal.
+        std::vector<uint32_t> ring;
+        // Fits vertex v over `all` less the vertices facing away by more than
+        // 60 degrees (the surface is a usable height function over the
+        // tangent plane only there: a ring that wraps round a thin part, an
+        // ear, reaches the other side);
+        // again in the jet normal's frame where the vertex normal was more
+        // than 5 degrees off (a poor normal, e.g. at folded triangles).
+        const auto fit_ring = [&](const std::vector<uint32_t>& all, size_t v, VertexJet& jet) {
+            ring.clear();
+            for (uint32_t q : all)
+                if (q == v || glm::dot(in.normals[q], in.normals[v]) > kSideCosine) ring.push_back(q);
+            if (!fit_vertex(in.mesh, ring, glm::dvec3(in.normals[v]), degree, jet)) return false;
             for (int again = 0; options.refit && again < 2 && glm::dot(jet.normal, in.normals[v]) < kRefitCosine;
                  ++again) {
                 VertexJet refit;
@@ -188,6 +214,36 @@ CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& optio
                 const bool settled = glm::dot(refit.normal, jet.normal) >= kRefitCosine;
                 jet = refit;
                 if (settled) break;
+            }
+            return true;
+        };
+        for (size_t v = begin; v < end; ++v) {
+            const std::vector<uint32_t>& all = rings.collect(adj, uint32_t(v), base_rings);
+            for (int r = base_rings; all.size() < points_needed(degree) && r < max_rings;) {
+                const size_t before = all.size();
+                r = rings.grow(adj);
+                if (all.size() == before) break;
+            }
+            VertexJet jet;
+            if (!fit_ring(all, v, jet)) {
+                out.flags[v] = kFlagFallback;
+                continue;
+            }
+            // A residual at the level of the positions' float rounding means
+            // truncation is negligible and rounding dominates: a wider ring
+            // averages it down (flat regions, fine tessellations).
+            const glm::vec3 p0 = in.mesh.positions[v];
+            const double rounding =
+                kFloatRounding * std::max({std::fabs(p0.x), std::fabs(p0.y), std::fabs(p0.z)});
+            if (grow_when_exact && jet.residual < kRoundingResidual * rounding) {
+                const size_t before = all.size();
+                rings.grow(adj);
+                VertexJet wider;
+                // Kept only if it is rounding-limited too: a wider ring that
+                // reaches other features (or damage) is not a better fit.
+                if (all.size() > before && fit_ring(all, v, wider) &&
+                    wider.residual < 2 * kRoundingResidual * rounding)
+                    jet = wider;
             }
             out.normals[v] = jet.normal;
             out.tensors.tensor[v] = jet.tensor;

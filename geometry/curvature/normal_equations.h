@@ -31,6 +31,7 @@ public:
     // faster than row by row, from moments): ata upper triangle, atb, b^T b.
     void set(int i, int j, double ata) { ata_[i][j] = ata; }
     void set_rhs(int i, double atb) { atb_[i] = atb; }
+    void set_btb(double btb) { btb_ = btb; }
 
     // Solves for the first k unknowns only (the others set to 0). Returns
     // false when the block is not numerically positive definite after

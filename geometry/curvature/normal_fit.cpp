@@ -14,14 +14,9 @@ namespace kappa {
 CurvatureEstimate estimate_normal_fit(const EstimatorInput& in) {
     const size_t nv = in.mesh.vertex_count();
     const VertexAdjacency adj = build_vertex_adjacency(in.mesh, in.vf);
-    CurvatureEstimate out;
-    out.tensors.tensor.assign(nv, Tensor2{});
-    out.flags.assign(nv, 0);
+    CurvatureEstimate out = empty_estimate(nv, false);
     parallel_for(nv, [&](size_t v) {
-        const glm::dvec3 p(in.mesh.positions[v]), n(in.normals[v]);
-        glm::vec3 fu, fv;
-        tangent_frame(in.normals[v], fu, fv);
-        const glm::dvec3 u(fu), w(fv);
+        const auto [p, u, w, n] = vertex_frame(in, v);
         NormalEquations<3> eq;
         for (uint32_t k = adj.begin(v); k < adj.end(v); ++k) {
             const glm::dvec3 d = glm::dvec3(in.mesh.positions[adj.neighbours[k]]) - p;

@@ -44,9 +44,7 @@ void add_edge(const EstimatorInput& in, uint32_t a, uint32_t b, uint32_t f, doub
 
 CurvatureEstimate estimate_tensor_averaging(const EstimatorInput& in) {
     const size_t nv = in.mesh.vertex_count();
-    CurvatureEstimate out;
-    out.tensors.tensor.assign(nv, Tensor2{});
-    out.flags.assign(nv, 0);
+    CurvatureEstimate out = empty_estimate(nv, false);
     parallel_for(nv, [&](size_t v) {
         glm::dmat3 T(0.0);
         double area = 0;
@@ -62,9 +60,8 @@ CurvatureEstimate estimate_tensor_averaging(const EstimatorInput& in) {
             out.flags[v] = kFlagFallback;
             return;
         }
-        glm::vec3 fu, fv;
-        tangent_frame(in.normals[v], fu, fv);
-        const glm::dvec3 u(fu), w(fv);
+        const VertexFrame f = vertex_frame(in, v);
+        const glm::dvec3 &u = f.u, &w = f.w;
         const double tuu = glm::dot(u, T * u) / area, tuv = glm::dot(u, T * w) / area, tvv = glm::dot(w, T * w) / area;
         if (!std::isfinite(tuu) || !std::isfinite(tuv) || !std::isfinite(tvv)) {
             out.flags[v] = kFlagFallback;

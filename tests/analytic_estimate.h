@@ -1,0 +1,64 @@
+// Errors of an estimator's raw output (geometry/curvature/estimate.h)
+// against analytic truth, for tests and the accuracy lab that call an
+// estimator directly with options of their own (JetOptions).
+#pragma once
+
+#include "analytic_curvature.h"
+
+#include "geometry/curvature/estimate.h"
+#include "geometry/face_geometry.h"
+#include "geometry/normals.h"
+#include "geometry/vertex_faces.h"
+#include "geometry/voronoi_areas.h"
+
+namespace kappa::test {
+
+// What an estimator takes, computed as compute_surface_fields does (Max
+// normals, mixed Voronoi areas). Keep it alive while the input is used.
+struct EstimatorInputs {
+    VertexFaces vf;
+    FaceGeometry faces;
+    std::vector<glm::vec3> normals;
+    std::vector<float> areas;
+
+    EstimatorInput of(const Mesh& m) const { return {m, vf, faces, normals, areas}; }
+};
+
+inline EstimatorInputs estimator_inputs(const Mesh& m) {
+    EstimatorInputs in{build_vertex_faces(m), compute_face_geometry(m), {}, {}};
+    in.normals = compute_vertex_normals(in.vf, in.faces);
+    in.areas = compute_point_areas(in.vf, in.faces.corner_areas);
+    return in;
+}
+
+struct RelativeErrors {
+    double curvature = 0, dcurv = 0;  // as relative_curvature_error and relative_dcurv_error
+};
+
+// Relative errors of a CurvatureEstimate with its own normals (II and C in
+// tangent_frame(normal)), measured like relative_*_error: the estimate's
+// tensors as 3x3 forms, compared in the true normal's tangent frame.
+inline RelativeErrors relative_errors(const CurvatureEstimate& e, const AnalyticMesh& a) {
+    double ek = 0, rk = 0, ec = 0, rc = 0;
+    auto norm2 = [](const glm::dvec4& C) { return C[0] * C[0] + 3 * C[1] * C[1] + 3 * C[2] * C[2] + C[3] * C[3]; };
+    for (size_t i = 0; i < a.normal.size(); ++i) {
+        if (a.weight[i] == 0) continue;
+        glm::vec3 fu, fv, tu, tv;
+        tangent_frame(e.normals[i], fu, fv);
+        tangent_frame(glm::vec3(a.normal[i]), tu, tv);
+        const glm::dvec3 u(fu), v(fv), U(tu), V(tv);
+        const Tensor2& t = e.tensors.tensor[i];
+        const glm::dmat3 E =
+            double(t.ku) * outer(u, u) + double(t.kuv) * (outer(u, v) + outer(v, u)) + double(t.kv) * outer(v, v);
+        const glm::dmat3 D = E - a.shape[i];
+        ek += mean_square_over_directions(glm::dot(U, D * U), glm::dot(U, D * V), glm::dot(V, D * V));
+        rk += mean_square_over_directions(glm::dot(U, a.shape[i] * U), glm::dot(U, a.shape[i] * V),
+                                          glm::dot(V, a.shape[i] * V));
+        const glm::dvec4 C = dcurv_in_tangent_frame(glm::dvec4(e.dcurv_uv[i]), u, v, a.normal[i]);
+        ec += norm2(C - a.dcurv[i]);
+        rc += norm2(a.dcurv[i]);
+    }
+    return {std::sqrt(ek / rk), std::sqrt(ec / rc)};
+}
+
+}  // namespace kappa::test
