@@ -58,6 +58,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glGenBuffers(1, &triangle_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
+    cpu_mesh_.faces = std::move(ordered);
 
     // Boundary edges share the vertex buffer through a second VAO.
     const std::vector<glm::uvec2> edges = boundary_edges(mesh, fields.flags);
@@ -92,19 +93,19 @@ void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, f
     upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));
 }
 
-void MeshBuffers::read_fields(SurfaceFields& f, std::vector<glm::vec3>& fine_normals) const {
-    std::vector<GpuVertex> v(vertex_count_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glGetBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(v.size() * sizeof(GpuVertex)), v.data());
+// The CPU copy of what the shaders read (for CPU line extraction and strokes).
+void MeshBuffers::keep_cpu_copy(const std::vector<GpuVertex>& v) {
     const size_t n = v.size();
-    f = SurfaceFields();
+    SurfaceFields& f = cpu_fields_;
+    cpu_mesh_.positions.resize(n);
     f.normals.resize(n), f.k1.resize(n), f.k2.resize(n), f.d1.resize(n), f.d2.resize(n), f.dcurv.resize(n);
-    f.flags.resize(n), fine_normals.resize(n);
+    f.flags.resize(n), cpu_fine_normals_.resize(n);
     for (size_t i = 0; i < n; ++i) {
+        cpu_mesh_.positions[i] = v[i].position;
         f.normals[i] = v[i].normal, f.d1[i] = v[i].d1, f.d2[i] = v[i].d2;
         f.k1[i] = v[i].curv.x, f.k2[i] = v[i].curv.y, f.dcurv[i] = v[i].dcurv;
         f.flags[i] = v[i].unreliable > 0 ? kFlagUnreliable : 0;
-        fine_normals[i] = v[i].fine_normal;
+        cpu_fine_normals_[i] = v[i].fine_normal;
     }
 }
 
@@ -114,6 +115,7 @@ void MeshBuffers::upload(FieldUpload&& u) {
     ranges_ = u.ranges;
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
+    keep_cpu_copy(u.vertices);
     clusters_ = std::move(u.clusters);
     if (u.has_samples) {
         surface_area_ = u.surface_area;

@@ -34,10 +34,13 @@ public:
     // any thread, with face_clusters()) then this, on the GL thread.
     void upload(FieldUpload&& prepared);
     const FaceClusters& face_clusters() const { return face_clusters_; }
-    // The fields on the GPU now, read back (for strokes of exactly the view
-    // drawn): normals, k1, k2, d1, d2, C, unreliable vertices as
-    // kFlagUnreliable, and the pixel-scale contour normals.
-    void read_fields(SurfaceFields& fields, std::vector<glm::vec3>& fine_normals) const;
+    // A CPU copy of what the shaders read, for lines made on the CPU (strokes,
+    // the CPU isoline pass): the positions with the faces in the uploaded
+    // (cluster) order; the fields on the GPU now (normals, k1, k2, d1, d2,
+    // C, unreliable vertices as kFlagUnreliable); the pixel-scale contour normals.
+    const Mesh& cpu_mesh() const { return cpu_mesh_; }
+    const SurfaceFields& cpu_fields() const { return cpu_fields_; }
+    const std::vector<glm::vec3>& cpu_fine_normals() const { return cpu_fine_normals_; }
     MeshBuffers(const MeshBuffers&) = delete;
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 
@@ -74,6 +77,7 @@ public:
     float map_range(ColorMap map) const { return ranges_[size_t(map)]; }
 
 private:
+    void keep_cpu_copy(const std::vector<GpuVertex>& vertices);
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
     GLuint edge_vao_ = 0, edge_buffer_ = 0;
     GLuint sample_vao_ = 0, sample_buffer_ = 0;
@@ -87,6 +91,9 @@ private:
     FaceClusters face_clusters_;
     MeshClusters clusters_;
     std::array<float, 7> ranges_{};
+    Mesh cpu_mesh_;
+    SurfaceFields cpu_fields_;
+    std::vector<glm::vec3> cpu_fine_normals_;
 };
 
 }  // namespace kappa::render

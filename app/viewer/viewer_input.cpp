@@ -166,12 +166,10 @@ void ViewerApp::save_screenshot(const std::string& path, bool with_panel) {
             // The drawing area as strokes of exactly the fields drawn (the panel is not vector art).
             if (!model_ || !renderer_->mesh()) return report("no mesh to save yet", true);
             const Area a = drawing_area();
-            SurfaceFields fields;
-            std::vector<glm::vec3> fine_normals;
-            renderer_->mesh()->read_fields(fields, fine_normals);
+            const render::MeshBuffers& gpu = *renderer_->mesh();
             const std::vector<CreaseEdge> creases = render::crease_edges_of(model_->crease_points);
-            const render::StrokeSource source{model_->mesh.get(), &fields, &fine_normals, &creases,
-                                              renderer_->mesh()->feature_size()};
+            const render::StrokeSource source{&gpu.cpu_mesh(), &gpu.cpu_fields(), &gpu.cpu_fine_normals(), &creases,
+                                              gpu.feature_size()};
             render::write_vector_view(*renderer_, camera(), state_.settings, a.pixels.x, a.pixels.y, source,
                                       *vector_format, path);
             return report("wrote " + path);
