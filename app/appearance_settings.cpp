@@ -181,6 +181,17 @@ const std::vector<AppearanceSetting>& appearance_settings() {
         {"background", "COLOR", "white, transparent, black or #rrggbb (default white)",
          "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)},
         {"msaa", "on|off", "4x multisampling of the surface (default on)", "on or off", on_off(&R::msaa)},
+        {"line-extraction", "auto|gpu|cpu",
+         "where contours, suggestive contours and highlights are extracted: on the CPU (fast on software GL such "
+         "as llvmpipe), in a geometry shader (fast on GPUs), or auto: the CPU on software GL (default auto)",
+         "auto, gpu or cpu",
+         [](R& s, const std::string& v) {
+             if (v == "auto") s.line_extraction = render::LineExtraction::Auto;
+             else if (v == "gpu") s.line_extraction = render::LineExtraction::Gpu;
+             else if (v == "cpu") s.line_extraction = render::LineExtraction::Cpu;
+             else return false;
+             return true;
+         }},
     };
     return table;
 }

@@ -87,9 +87,14 @@ int main(int argc, char** argv) {
     all.hatching = render::Hatching::Cross;
     render::RenderSettings lines_unculled = lines;  // what cluster culling saves
     lines_unculled.cull_clusters = false;
+    render::RenderSettings lines_gpu = lines, lines_cpu = lines;  // where the contour pass's lines are made
+    lines_gpu.line_extraction = render::LineExtraction::Gpu;
+    lines_cpu.line_extraction = render::LineExtraction::Cpu;
     std::vector<Config> configs = {{"lambert", plain}, {"lambert+contours+suggestive", lines},
                                    {"lambert+contours+suggestive+hatching", all},
-                                   {"  (contours+suggestive, no culling)", lines_unculled}};
+                                   {"  (contours+suggestive, no culling)", lines_unculled},
+                                   {"  (contours+suggestive, geometry shader)", lines_gpu},
+                                   {"  (contours+suggestive, CPU extraction)", lines_cpu}};
     for (auto& c : configs) c.settings.msaa = false;
     auto with_msaa = configs;
     for (auto& c : with_msaa) c.settings.msaa = true;

@@ -51,7 +51,7 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
     p.set("u_hidden_lines", int(s.hidden_lines));
 }
 
-void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
+void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_isolines,
                         GLuint surface_depth_texture) {
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -65,7 +65,9 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     // one pass over the triangles.
     const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
     const bool highlights = s.lines.suggestive_highlights;
-    if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
+    if (cpu_isolines) {
+        cpu_isolines_.draw(mesh, frame, s);
+    } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
         set_common(isolines_, mesh, frame, s);
         isolines_.set("u_contours", int(contours));
         isolines_.set("u_silhouette_only", int(silhouette_only));

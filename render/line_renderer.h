@@ -5,6 +5,7 @@
 // framebuffer. Occlusion is tested against the surface depth texture.
 #pragma once
 
+#include "render/cpu_isolines.h"
 #include "render/frame_params.h"
 #include "render/mesh_buffers.h"
 #include "render/render_settings.h"
@@ -15,13 +16,15 @@ namespace kappa::render {
 class LineRenderer {
 public:
     LineRenderer();  // compiles the shaders (GL context current)
-    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings,
+    // cpu_isolines: the contour pass's lines come from render/cpu_isolines.h.
+    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_isolines,
               GLuint surface_depth_texture);
 
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                     const RenderSettings& settings);
     ShaderProgram isolines_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_, creases_;
+    CpuIsolinePass cpu_isolines_;
 };
 
 }  // namespace kappa::render

@@ -17,6 +17,10 @@ namespace kappa::render {
 enum class Shading { None, Lambert, Toon, Hemisphere, ToonBW, Gooch };
 enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
 enum class Hatching { None, Min, Max, Cross };
+// Where contours, suggestive contours and highlights and Dw kr lines are
+// extracted: auto = on the CPU when the GL is a software renderer
+// (llvmpipe), in a geometry shader otherwise (render/cpu_isolines.h).
+enum class LineExtraction { Auto, Gpu, Cpu };
 
 // Per-vertex direction glyphs (--vectors), as bits.
 enum VectorGlyph { kGlyphNormal = 1, kGlyphPrincipal1 = 2, kGlyphPrincipal2 = 4, kGlyphAsymptotic = 8, kGlyphView = 16 };
@@ -85,6 +89,7 @@ struct RenderSettings {
 
     glm::vec4 background{1, 1, 1, 1};  // straight RGBA; alpha 0 = transparent
     bool msaa = true;                  // 4x multisampling of the surface pass
+    LineExtraction line_extraction = LineExtraction::Auto;
     bool cull_clusters = true;         // skip clusters that cannot hold a line (same image; off for tests, benchmarks)
 };
 

@@ -6,10 +6,16 @@
 #include <glm/geometric.hpp>
 
 #include <iterator>
+#include <string>
 
 namespace kappa::render {
 
-Renderer::Renderer() = default;
+Renderer::Renderer() {
+    const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string renderer = name ? name : "";
+    software_gl_ = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
+                   renderer.find("SwiftShader") != std::string::npos;
+}
 Renderer::~Renderer() = default;
 
 void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
@@ -67,7 +73,10 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     glBindFramebuffer(GL_FRAMEBUFFER, lines_fb_.id());
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (mesh_ && (s.lines.any() || s.vectors != 0)) line_pass_.draw(*mesh_, frame, s, surface_fb_.depth_texture());
+    const bool cpu_isolines = s.line_extraction == LineExtraction::Cpu ||
+                              (s.line_extraction == LineExtraction::Auto && software_gl_);
+    if (mesh_ && (s.lines.any() || s.vectors != 0))
+        line_pass_.draw(*mesh_, frame, s, cpu_isolines, surface_fb_.depth_texture());
     stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
 
     // 3. Composite into the target, then the colour bar on top.

@@ -72,6 +72,7 @@ private:
     Framebuffer surface_ms_fb_;  // multisampled surface (when MSAA is on)
     Framebuffer surface_fb_;     // colour + depth textures
     Framebuffer lines_fb_;
+    bool software_gl_ = false;  // llvmpipe and the like: RenderSettings::line_extraction auto means CPU
 };
 
 // Headless convenience: renders into an offscreen RGBA8 framebuffer of

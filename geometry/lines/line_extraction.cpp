@@ -90,6 +90,17 @@ const char* line_type_name(LineType type) {
     return "";
 }
 
+void extract_view_lines_of_face(const Mesh& mesh, const Face& t, const SurfaceFields& fields, const ViewQuantities& q,
+                                const LineExtractionOptions& o, ExtractedLines& lines) {
+    const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
+    if (o.contours) contour_segment(t, p, q, lines[int(LineType::Contour)]);
+    if (o.suggestive)
+        suggestive_segment(t, p, fields, q, 1.0f, o.sc_threshold, o.fade, lines[int(LineType::Suggestive)]);
+    if (o.suggestive_highlights)
+        suggestive_segment(t, p, fields, q, -1.0f, o.sh_threshold, o.fade, lines[int(LineType::SuggestiveHighlight)]);
+    if (o.dwkr) dwkr_segment(t, p, fields, q, o.sc_threshold, lines[int(LineType::Dwkr)]);
+}
+
 std::vector<CreaseEdge> crease_edges(const Mesh& mesh, const std::vector<glm::uvec2>& creases,
                                      const std::vector<glm::uvec2>& crease_faces) {
     std::vector<CreaseEdge> out;
@@ -128,16 +139,7 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
     ExtractedLines lines;
     auto& contours = lines[int(LineType::Contour)];
     if (o.contours || o.suggestive || o.suggestive_highlights || o.dwkr)
-        for (const Face& t : mesh.faces) {
-            const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
-            if (o.contours) contour_segment(t, p, q, contours);
-            if (o.suggestive)
-                suggestive_segment(t, p, fields, q, 1.0f, o.sc_threshold, o.fade, lines[int(LineType::Suggestive)]);
-            if (o.suggestive_highlights)
-                suggestive_segment(t, p, fields, q, -1.0f, o.sh_threshold, o.fade,
-                                   lines[int(LineType::SuggestiveHighlight)]);
-            if (o.dwkr) dwkr_segment(t, p, fields, q, o.sc_threshold, lines[int(LineType::Dwkr)]);
-        }
+        for (const Face& t : mesh.faces) extract_view_lines_of_face(mesh, t, fields, q, o, lines);
     extract_curvature_lines(mesh, fields, o, lines);
     extract_level_lines(mesh, fields, o, lines);
     ViewRidgeOptions vr;

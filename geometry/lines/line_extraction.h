@@ -94,6 +94,13 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
                              glm::vec3 eye, const std::vector<CreaseEdge>& creases,
                              const LineExtractionOptions& options);
 
+// The view-dependent lines of one triangle (contours, suggestive contours,
+// suggestive highlights, Dw kr lines; no crease edges), for passes that
+// choose their own triangles (render/cpu_isolines.h).
+void extract_view_lines_of_face(const Mesh& mesh, const Face& face, const SurfaceFields& fields,
+                                const ViewQuantities& quantities, const LineExtractionOptions& options,
+                                ExtractedLines& lines);
+
 // Edges used by exactly one face, as vertex pairs (a < b), sorted. With flags,
 // only edges between two kFlagBoundary vertices are considered.
 std::vector<glm::uvec2> boundary_edges(const Mesh& mesh, const std::vector<uint8_t>& flags);

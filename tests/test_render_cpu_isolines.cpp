@@ -1,0 +1,58 @@
+// The contour pass with its lines made on the CPU (render/cpu_isolines.h,
+// the default on software GL) draws what the geometry-shader pass draws:
+// the same triangles are cut by the same tests and the segments drawn by the
+// same fragment shader, so the images differ only in a few pixels where
+// float rounding moves a crossing.
+#include <catch2/catch.hpp>
+
+#include "test_render_fixtures.h"
+#include "test_support.h"
+
+#include "geometry/default_model.h"
+#include "geometry/feature_size.h"
+#include "geometry/io/mesh_io.h"
+#include "geometry/surface_analysis.h"
+#include "render/ink_agreement.h"
+
+#include <string>
+
+using namespace kappa;
+
+namespace {
+
+size_t differing_pixels(const render::Image& a, const render::Image& b) {
+    size_t n = 0;
+    for (size_t i = 0; i < a.pixels.size(); i += 4)
+        n += a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2];
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("CPU and geometry-shader extraction of contours draw the same image", "[render][cpu-isolines]") {
+    for (const std::string& name : {std::string(), std::string("bunny.ply")}) {
+        const Mesh mesh = name.empty() ? make_default_model() : load_mesh(test::shared_mesh(name));
+        const SurfaceFields fields = compute_surface_fields(mesh);
+        const float fs = feature_size(mesh, fields);
+        const auto camera = render::Camera::default_view(mesh, render::bounding_sphere(mesh), 30.0f, 4.0f / 3.0f);
+        render::LineSelection contours_suggestive{true, true, false, false};
+        render::LineSelection silhouette{false, false, false, false};
+        silhouette.silhouette = true;
+        render::LineSelection highlights{false, false, false, false};
+        highlights.suggestive_highlights = highlights.dwkr = true;
+        for (const render::LineSelection& lines : {contours_suggestive, silhouette, highlights}) {
+            INFO((name.empty() ? "built-in" : name) << ", lines " << render::to_string(lines));
+            render::RenderSettings s = test::lines_only(lines);
+            s.line_extraction = render::LineExtraction::Gpu;
+            const render::Image gpu = test::render(mesh, fields, fs, camera, s, 640, 480);
+            s.line_extraction = render::LineExtraction::Cpu;
+            const render::Image cpu = test::render(mesh, fields, fs, camera, s, 640, 480);
+            const size_t ink = test::count_ink(gpu), differ = differing_pixels(gpu, cpu);
+            INFO(ink << " ink pixels, " << differ << " pixels differ");
+            CHECK(ink > 200);
+            CHECK(double(differ) < 0.02 * double(ink));
+            CHECK(render::ink_within(gpu, cpu, 1.0f) > 0.995);
+            CHECK(render::ink_within(cpu, gpu, 1.0f) > 0.995);
+        }
+    }
+}
