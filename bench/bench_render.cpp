@@ -3,12 +3,15 @@
 // suggestive contours + hatching, on the default model and bunny-1M.ply;
 // and with every line type of --lines on (issue 12: at most 1.5x the
 // contours + suggestive frame), the ratio printed.
-//   bench_render [--size WxH] [--frames N] [--each] [MESH ...]   (default: built-in model and
-//   ../shared/meshes/bunny-1M.ply next to the repository; --each: also every line type alone)
+//   bench_render [--size WxH] [--frames N] [--each] [--detail PX] [MESH ...]   (default: built-in
+//   model and ../shared/meshes/bunny-1M.ply next to the repository; --each: also every line type
+//   alone; --detail: the fields at that scale for the view, as kappa render draws by default,
+//   instead of the raw 1-ring fields)
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/surface_analysis.h"
+#include "render/detail_fields.h"
 #include "render/egl_context.h"
 #include "render/framebuffer.h"
 #include "render/renderer.h"
@@ -65,9 +68,11 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
 int main(int argc, char** argv) {
     int width = 1024, height = 768, frames = 20;
     bool each = false;
+    float detail = 0;
     std::vector<std::string> meshes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--each")) each = true;
+        else if (!std::strcmp(argv[i], "--detail") && i + 1 < argc) detail = float(std::atof(argv[++i]));
         else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
         else meshes.push_back(argv[i]);
@@ -120,8 +125,15 @@ int main(int argc, char** argv) {
         const SurfaceFields fields = compute_surface_fields(mesh);
         renderer.set_mesh(mesh, fields, feature_size(mesh, fields));
         const auto camera = render::Camera::framing(renderer.mesh()->bounds(), 30.0f, float(width) / float(height));
-        std::printf("\n%s: %zu vertices, %zu faces\n", path.empty() ? "built-in model" : path.c_str(),
-                    mesh.vertex_count(), mesh.face_count());
+        if (detail > 0) {
+            render::DetailSource source = render::make_detail_source(mesh, fields);
+            const render::DetailFields d = render::detail_fields(mesh, source, fields, camera, height, detail);
+            renderer.set_mesh(mesh, d.fields, d.feature_size, d.fine_normals);
+        }
+        std::printf("\n%s: %zu vertices, %zu faces, %s\n", path.empty() ? "built-in model" : path.c_str(),
+                    mesh.vertex_count(), mesh.face_count(), detail > 0 ? "detail fields" : "raw fields");
+        for (auto* set : {&configs, &with_msaa})
+            for (auto& c : *set) c.settings.detail = detail;
         for (const auto* set : {&configs, &with_msaa}) {
             std::vector<FrameTime> times;
             for (const auto& c : *set) {

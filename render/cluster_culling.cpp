@@ -66,6 +66,15 @@ struct Frustum {
     }
 };
 
+// Adds cluster c's faces to the runs, extending the last run when they follow it.
+void append_cluster(std::vector<FaceRun>& runs, const MeshClusters& clusters, size_t c) {
+    const uint32_t first = clusters.first_face[c], count = clusters.first_face[c + 1] - first;
+    if (!runs.empty() && runs.back().first + runs.back().count == first)
+        runs.back().count += count;
+    else
+        runs.push_back({first, count});
+}
+
 }  // namespace
 
 std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const FrameParams& frame, bool contours,
@@ -81,12 +90,19 @@ std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const Frame
         const bool draw = (contours && contour_facing == Facing::Mixed) ||
                           (suggestive && clusters.may_have_suggestive[c] &&
                            (facing == Facing::Mixed || (facing == Facing::Front && clusters.max_strength[c] > sc_threshold)));
-        if (!draw) continue;
-        const uint32_t first = clusters.first_face[c], count = clusters.first_face[c + 1] - first;
-        if (!runs.empty() && runs.back().first + runs.back().count == first)
-            runs.back().count += count;
-        else
-            runs.push_back({first, count});
+        if (draw) append_cluster(runs, clusters, c);
+    }
+    return runs;
+}
+
+std::vector<FaceRun> visible_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                  float margin_px) {
+    const Frustum frustum(frame.mvp, 2.0f * margin_px / frame.viewport);
+    std::vector<FaceRun> runs;
+    for (size_t c = 0; c < clusters.size(); ++c) {
+        const ClusterBounds& b = clusters.bounds[c];
+        if (frustum.may_touch(b) && (back_facing || classify_facing(b, frame.eye) != Facing::Back))
+            append_cluster(runs, clusters, c);
     }
     return runs;
 }

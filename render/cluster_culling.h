@@ -56,4 +56,13 @@ struct FaceRun {
 std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const FrameParams& frame, bool contours,
                                        bool suggestive, float sc_threshold, float margin_px);
 
+// The runs of faces the other line passes (ridges and valleys, parabolic and
+// H = 0 lines, apparent ridges, principal highlights, isophotes, topographic
+// lines) draw: the clusters that may touch the view, less the entirely
+// back-facing ones unless `back_facing` (hidden lines drawn). Lines there
+// are behind the front surface; only within the occlusion tolerance of a
+// contour (half an edge) could one have shown.
+std::vector<FaceRun> visible_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                  float margin_px);
+
 }  // namespace kappa::render

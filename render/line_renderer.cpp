@@ -21,6 +21,7 @@ std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files, s
 
 LineRenderer::LineRenderer()
     : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl"})),
+      isolines_highlights_(line_program({"line_quad.glsl", "isolines_geom.glsl"}, "#define KAPPA_HIGHLIGHTS\n")),
       boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})),
       curvature_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "curvature_lines_vert.glsl"}},
                         {GL_GEOMETRY_SHADER, {"line_quad.glsl", "curvature_lines_geom.glsl"}},
@@ -88,33 +89,49 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
 
+    // Passes other than contours and suggestive contours skip the clusters
+    // outside the view and, unless hidden lines are drawn, the entirely
+    // back-facing ones (cluster_culling.h).
+    std::vector<FaceRun> visible;
+    bool visible_done = false;
+    auto draw_visible = [&] {
+        if (!s.cull_clusters) return mesh.draw_triangles();
+        if (!visible_done)
+            visible = visible_runs(mesh.clusters(), frame, s.hidden_lines, 0.5f * s.line_width + 2.0f);
+        visible_done = true;
+        mesh.draw_triangles(visible);
+    };
     // Contours, suggestive contours, suggestive highlights and the Dw kr lines:
     // one pass over the triangles.
     const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
     const bool highlights = s.lines.suggestive_highlights;
     if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
-        set_common(isolines_, mesh, frame, s);
-        isolines_.set("u_contours", int(contours));
-        isolines_.set("u_silhouette_only", int(silhouette_only));
-        isolines_.set("u_suggestive", int(s.lines.suggestive));
-        isolines_.set("u_sc_threshold", s.sc_threshold);
-        isolines_.set("u_highlights", int(highlights));
-        isolines_.set("u_sh_threshold", s.sh_threshold);
-        isolines_.set("u_dwkr", int(s.lines.dwkr));
-        isolines_.set("u_fade", int(s.fade));
+        // The variant that can also draw highlights and Dw kr lines only when they are on.
+        ShaderProgram& p = highlights || s.lines.dwkr ? isolines_highlights_ : isolines_;
+        set_common(p, mesh, frame, s);
+        p.set("u_contours", int(contours));
+        p.set("u_silhouette_only", int(silhouette_only));
+        p.set("u_suggestive", int(s.lines.suggestive));
+        p.set("u_sc_threshold", s.sc_threshold);
+        p.set("u_highlights", int(highlights));
+        p.set("u_sh_threshold", s.sh_threshold);
+        p.set("u_dwkr", int(s.lines.dwkr));
+        p.set("u_fade", int(s.fade));
         // One pixel spans 2 w / (P[1][1] height) model units at camera distance w.
-        isolines_.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
+        p.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
         // Highlights need a zero of kr like suggestive contours, but no bound on
         // -Dw kr holds (its cot(theta) term grows without limit): no strength
-        // test for them. The Dw kr lines can be anywhere in front.
-        if (s.cull_clusters && !s.lines.dwkr)
+        // test for them. The Dw kr lines can be anywhere in front: only the
+        // clusters outside the view are skipped then.
+        if (s.cull_clusters && s.lines.dwkr)
+            mesh.draw_triangles(visible_runs(mesh.clusters(), frame, true, 0.5f * s.line_width + 2.0f));
+        else if (s.cull_clusters)
             mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
                                                   highlights ? -1e30f : s.sc_threshold, 0.5f * s.line_width + 2.0f));
         else
             mesh.draw_triangles();
     }
-    // Ridges, valleys, parabolic and mean-zero lines: every triangle (they do
-    // not depend on the view, so the contour pass's culling does not apply).
+    // Ridges, valleys, parabolic and mean-zero lines.
     if (s.lines.curvature_lines()) {
         set_common(curvature_lines_, mesh, frame, s);
         curvature_lines_.set("u_parabolic", int(s.lines.parabolic));
@@ -124,10 +141,9 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         curvature_lines_.set("u_rv_threshold", s.rv_threshold);
         curvature_lines_.set("u_feature_size", mesh.feature_size());
         curvature_lines_.set("u_fade", int(s.fade));
-        mesh.draw_triangles();
+        draw_visible();
     }
-    // Apparent ridges and principal highlights: every triangle (apparent
-    // ridges follow contours onto barely back-facing triangles).
+    // Apparent ridges and principal highlights.
     if (s.lines.view_ridges()) {
         set_common(view_ridges_, mesh, frame, s);
         view_ridges_.set("u_apparent_ridges", int(s.lines.apparent_ridges));
@@ -136,7 +152,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         view_ridges_.set("u_ph_threshold", s.ph_threshold);
         view_ridges_.set("u_fade", int(s.fade));
         view_ridges_.set("u_feature_size", mesh.feature_size());
-        mesh.draw_triangles();
+        draw_visible();
     }
     // Isophotes (n.l levels, the light as the shading's, in model coordinates)
     // and topographic lines (height levels along y across the bounding sphere).
@@ -148,7 +164,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_first", 0.5f * step);
         level_lines_.set("u_step", step);
         level_lines_.set("u_count", s.isophote_count);
-        mesh.draw_triangles();
+        draw_visible();
     }
     if (s.lines.topo && s.topo_count > 0) {
         set_common(level_lines_, mesh, frame, s);
@@ -157,7 +173,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_first", mesh.bounds().center.y - mesh.bounds().radius + 0.5f * step);
         level_lines_.set("u_step", step);
         level_lines_.set("u_count", s.topo_count);
-        mesh.draw_triangles();
+        draw_visible();
     }
     // Direction glyphs, 10 pixels long, at about one vertex per 600 pixels of the image.
     if (s.vectors != 0 && mesh.vertex_count() > 0) {

@@ -22,7 +22,7 @@ private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                     const RenderSettings& settings);
     void draw_hatching(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
-    ShaderProgram isolines_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_, creases_, hatching_;
+    ShaderProgram isolines_, isolines_highlights_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_, creases_, hatching_;
 };
 
 }  // namespace kappa::render
