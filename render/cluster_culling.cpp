@@ -95,16 +95,56 @@ std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const Frame
     return runs;
 }
 
-std::vector<FaceRun> visible_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
-                                  float margin_px) {
+namespace {
+
+// The clusters in the view (less the entirely back-facing ones unless
+// back_facing) for which keep(bounds) holds.
+template <typename Keep>
+std::vector<FaceRun> visible_runs_where(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                        float margin_px, Keep keep) {
     const Frustum frustum(frame.mvp, 2.0f * margin_px / frame.viewport);
     std::vector<FaceRun> runs;
     for (size_t c = 0; c < clusters.size(); ++c) {
         const ClusterBounds& b = clusters.bounds[c];
-        if (frustum.may_touch(b) && (back_facing || classify_facing(b, frame.eye) != Facing::Back))
+        if (frustum.may_touch(b) && (back_facing || classify_facing(b, frame.eye) != Facing::Back) && keep(b))
             append_cluster(runs, clusters, c);
     }
     return runs;
+}
+
+// Whether [lo, hi] holds one of the levels first + k step, k = 0 .. count - 1
+// (with a margin for float rounding in the shader).
+bool holds_level(float lo, float hi, const LevelSet& levels) {
+    const float margin = 1e-4f * levels.step;
+    const float k0 = std::ceil((lo - margin - levels.first) / levels.step);
+    const float k1 = std::floor((hi + margin - levels.first) / levels.step);
+    return k0 <= k1 && k1 >= 0 && k0 <= float(levels.count - 1);
+}
+
+}  // namespace
+
+std::vector<FaceRun> visible_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                  float margin_px) {
+    return visible_runs_where(clusters, frame, back_facing, margin_px, [](const ClusterBounds&) { return true; });
+}
+
+std::vector<FaceRun> isophote_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                   float margin_px, glm::vec3 light, const LevelSet& levels) {
+    return visible_runs_where(clusters, frame, back_facing, margin_px, [&](const ClusterBounds& b) {
+        if (b.cos_angle <= -1.0f) return true;  // normals in every direction
+        // n.l for n within angle a of the axis: the angle to l lies in [beta - a, beta + a].
+        const float beta = std::acos(std::clamp(glm::dot(b.axis, light), -1.0f, 1.0f));
+        const float a = std::acos(std::clamp(b.cos_angle, -1.0f, 1.0f));
+        const float hi = std::cos(std::max(0.0f, beta - a)), lo = std::cos(std::min(float(M_PI), beta + a));
+        return holds_level(lo - 1e-4f, hi + 1e-4f, levels);
+    });
+}
+
+std::vector<FaceRun> topo_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                               float margin_px, const LevelSet& levels) {
+    return visible_runs_where(clusters, frame, back_facing, margin_px, [&](const ClusterBounds& b) {
+        return holds_level(b.center.y - b.radius, b.center.y + b.radius, levels);
+    });
 }
 
 }  // namespace kappa::render

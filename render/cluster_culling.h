@@ -65,4 +65,19 @@ std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const Frame
 std::vector<FaceRun> visible_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
                                   float margin_px);
 
+// Levels first + k step, k = 0 .. count - 1.
+struct LevelSet {
+    float first, step;
+    int count;
+};
+
+// visible_runs less the clusters that cannot cross a level: isophotes (n.l
+// with the unit light direction over the cone of the fields' normals) and
+// topographic lines (heights y over the bounding sphere). Exact: the values
+// interpolated over a triangle lie between its vertices'.
+std::vector<FaceRun> isophote_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                   float margin_px, glm::vec3 light, const LevelSet& levels);
+std::vector<FaceRun> topo_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                               float margin_px, const LevelSet& levels);
+
 }  // namespace kappa::render

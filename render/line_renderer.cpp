@@ -92,12 +92,13 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     // Passes other than contours and suggestive contours skip the clusters
     // outside the view and, unless hidden lines are drawn, the entirely
     // back-facing ones (cluster_culling.h).
+    const float margin = 0.5f * s.line_width + 2.0f;  // pixels a line may reach beyond its centre
     std::vector<FaceRun> visible;
     bool visible_done = false;
     auto draw_visible = [&] {
         if (!s.cull_clusters) return mesh.draw_triangles();
         if (!visible_done)
-            visible = visible_runs(mesh.clusters(), frame, s.hidden_lines, 0.5f * s.line_width + 2.0f);
+            visible = visible_runs(mesh.clusters(), frame, s.hidden_lines, margin);
         visible_done = true;
         mesh.draw_triangles(visible);
     };
@@ -124,10 +125,10 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         // test for them. The Dw kr lines can be anywhere in front: only the
         // clusters outside the view are skipped then.
         if (s.cull_clusters && s.lines.dwkr)
-            mesh.draw_triangles(visible_runs(mesh.clusters(), frame, true, 0.5f * s.line_width + 2.0f));
+            mesh.draw_triangles(visible_runs(mesh.clusters(), frame, true, margin));
         else if (s.cull_clusters)
             mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
-                                                  highlights ? -1e30f : s.sc_threshold, 0.5f * s.line_width + 2.0f));
+                                                  highlights ? -1e30f : s.sc_threshold, margin));
         else
             mesh.draw_triangles();
     }
@@ -156,24 +157,33 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     }
     // Isophotes (n.l levels, the light as the shading's, in model coordinates)
     // and topographic lines (height levels along y across the bounding sphere).
+    auto draw_runs = [&](const std::vector<FaceRun>& runs) {
+        if (s.cull_clusters) mesh.draw_triangles(runs);
+        else mesh.draw_triangles();
+    };
     if (s.lines.isophotes && s.isophote_count > 0) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 0);
-        level_lines_.set("u_light_model", glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame)));
+        const glm::vec3 light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
+        level_lines_.set("u_light_model", light);
         const float step = 1.0f / float(s.isophote_count);
-        level_lines_.set("u_first", 0.5f * step);
-        level_lines_.set("u_step", step);
-        level_lines_.set("u_count", s.isophote_count);
-        draw_visible();
+        const LevelSet levels{0.5f * step, step, s.isophote_count};
+        level_lines_.set("u_first", levels.first);
+        level_lines_.set("u_step", levels.step);
+        level_lines_.set("u_count", levels.count);
+        draw_runs(s.cull_clusters ? isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, light, levels)
+                                  : std::vector<FaceRun>{});
     }
     if (s.lines.topo && s.topo_count > 0) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 1);
         const float step = 2.0f * mesh.bounds().radius / float(s.topo_count);
-        level_lines_.set("u_first", mesh.bounds().center.y - mesh.bounds().radius + 0.5f * step);
-        level_lines_.set("u_step", step);
-        level_lines_.set("u_count", s.topo_count);
-        draw_visible();
+        const LevelSet levels{mesh.bounds().center.y - mesh.bounds().radius + 0.5f * step, step, s.topo_count};
+        level_lines_.set("u_first", levels.first);
+        level_lines_.set("u_step", levels.step);
+        level_lines_.set("u_count", levels.count);
+        draw_runs(s.cull_clusters ? topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels)
+                                  : std::vector<FaceRun>{});
     }
     // Direction glyphs, 10 pixels long, at about one vertex per 600 pixels of the image.
     if (s.vectors != 0 && mesh.vertex_count() > 0) {

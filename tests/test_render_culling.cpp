@@ -69,7 +69,8 @@ TEST_CASE("cluster culling gives the same lines as drawing every triangle", "[re
     SECTION("built-in model") { check_same_with_and_without_culling(make_default_model(), "default"); }
 }
 
-TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours",
+TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours; level lines skip "
+          "clusters without a level exactly",
           "[render][culling]") {
     const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
     const SurfaceFields fields = compute_surface_fields(mesh);
@@ -90,6 +91,20 @@ TEST_CASE("culling back-facing clusters in the other line passes changes only pi
     INFO("ink " << test::count_ink(all) << ", pixels whose ink differs " << differ);
     CHECK(test::count_ink(all) > 2000);
     CHECK(differ < test::count_ink(all) / 100);
+
+    // With hidden lines nothing back-facing is skipped, and the level lines'
+    // own culling (no level in a cluster's range of n.l or heights) is exact.
+    render::LineSelection levels{false, false, false, false, false, false, false, false, true, true};
+    s = test::lines_only(levels);
+    s.hidden_lines = true;
+    s.isophote_count = 8;
+    s.topo_count = 30;
+    s.cull_clusters = false;
+    const auto every = test::render(mesh, fields, fs, camera, s, 320, 240);
+    s.cull_clusters = true;
+    const auto skipped = test::render(mesh, fields, fs, camera, s, 320, 240);
+    CHECK(test::count_ink(every) > 2000);
+    CHECK(skipped.pixels == every.pixels);
 }
 
 TEST_CASE("cluster culling skips most of a sphere's triangles", "[render][culling]") {
