@@ -78,7 +78,7 @@ void append_cluster(std::vector<FaceRun>& runs, const MeshClusters& clusters, si
 }  // namespace
 
 std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const FrameParams& frame, bool contours,
-                                       bool suggestive, float sc_threshold, float margin_px) {
+                                       bool suggestive, float sc_threshold, float margin_px, bool any_front) {
     const Frustum frustum(frame.mvp, 2.0f * margin_px / frame.viewport);
     std::vector<FaceRun> runs;
     for (size_t c = 0; c < clusters.size(); ++c) {
@@ -87,7 +87,7 @@ std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const Frame
         const Facing facing = classify_facing(b, frame.eye);
         const Facing contour_facing =
             clusters.fine_bounds.empty() ? facing : classify_facing(clusters.fine_bounds[c], frame.eye);
-        const bool draw = (contours && contour_facing == Facing::Mixed) ||
+        const bool draw = (any_front && facing != Facing::Back) || (contours && contour_facing == Facing::Mixed) ||
                           (suggestive && clusters.may_have_suggestive[c] &&
                            (facing == Facing::Mixed || (facing == Facing::Front && clusters.max_strength[c] > sc_threshold)));
         if (draw) append_cluster(runs, clusters, c);

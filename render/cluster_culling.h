@@ -52,9 +52,11 @@ struct FaceRun {
 
 // The runs of faces the contour pass must draw for this frame. margin_px:
 // how far outside the image a line may still cover pixels inside it;
-// sc_threshold: the dimensionless s of the suggestive-contour test.
+// sc_threshold: the dimensionless s of the suggestive-contour test;
+// any_front: also every cluster not entirely back-facing (the Dw kr lines,
+// drawn wherever n.v > 0).
 std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const FrameParams& frame, bool contours,
-                                       bool suggestive, float sc_threshold, float margin_px);
+                                       bool suggestive, float sc_threshold, float margin_px, bool any_front = false);
 
 // The runs of faces the other line passes (ridges and valleys, parabolic and
 // H = 0 lines, apparent ridges, principal highlights, isophotes, topographic

@@ -122,13 +122,10 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         p.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
         // Highlights need a zero of kr like suggestive contours, but no bound on
         // -Dw kr holds (its cot(theta) term grows without limit): no strength
-        // test for them. The Dw kr lines can be anywhere in front: only the
-        // clusters outside the view are skipped then.
-        if (s.cull_clusters && s.lines.dwkr)
-            mesh.draw_triangles(visible_runs(mesh.clusters(), frame, true, margin));
-        else if (s.cull_clusters)
+        // test for them. The Dw kr lines can be anywhere in front.
+        if (s.cull_clusters)
             mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
-                                                  highlights ? -1e30f : s.sc_threshold, margin));
+                                                  highlights ? -1e30f : s.sc_threshold, margin, s.lines.dwkr));
         else
             mesh.draw_triangles();
     }

@@ -40,10 +40,11 @@ void check_same_with_and_without_culling(const Mesh& mesh, const std::string& na
                           {{-2 * r, r, -2 * r}, o, 30.0f},
                           {{0, 3 * r, 0.1f * r}, o, 30.0f},
                           {{0.7f * r, 0, 2 * r}, {0.7f * r, 0, 0}, 15.0f}};
-    render::LineSelection highlights{false, false, false};
+    render::LineSelection highlights{false, false, false}, dwkr{true, false, false};
     highlights.suggestive_highlights = true;
+    dwkr.dwkr = true;
     for (const auto& lines : {render::LineSelection{true, true, false}, render::LineSelection{true, false, false},
-                              render::LineSelection{false, true, false}, highlights}) {
+                              render::LineSelection{false, true, false}, highlights, dwkr}) {
         for (const View& v : views) {
             const auto camera = render::Camera::look_at(bounds.center + v.eye, bounds.center + v.target, {0, 1, 0}, v.fov);
             auto s = test::lines_only(lines);
@@ -69,7 +70,7 @@ TEST_CASE("cluster culling gives the same lines as drawing every triangle", "[re
     SECTION("built-in model") { check_same_with_and_without_culling(make_default_model(), "default"); }
 }
 
-TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours; level lines skip "
+TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours, and level lines skip "
           "clusters without a level exactly",
           "[render][culling]") {
     const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
