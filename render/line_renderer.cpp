@@ -89,18 +89,12 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
 
-    // Passes other than contours and suggestive contours skip the clusters
-    // outside the view and, unless hidden lines are drawn, the entirely
-    // back-facing ones (cluster_culling.h).
+    // Each pass draws every triangle, or with culling the runs of clusters
+    // that can hold its lines (render/cluster_culling.h).
     const float margin = 0.5f * s.line_width + 2.0f;  // pixels a line may reach beyond its centre
-    std::vector<FaceRun> visible;
-    bool visible_done = false;
-    auto draw_visible = [&] {
-        if (!s.cull_clusters) return mesh.draw_triangles();
-        if (!visible_done)
-            visible = visible_runs(mesh.clusters(), frame, s.hidden_lines, margin);
-        visible_done = true;
-        mesh.draw_triangles(visible);
+    auto draw_culled = [&](auto runs) {
+        if (s.cull_clusters) mesh.draw_triangles(runs());
+        else mesh.draw_triangles();
     };
     // Contours, suggestive contours, suggestive highlights and the Dw kr lines:
     // one pass over the triangles.
@@ -123,11 +117,10 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         // Highlights need a zero of kr like suggestive contours, but no bound on
         // -Dw kr holds (its cot(theta) term grows without limit): no strength
         // test for them. The Dw kr lines can be anywhere in front.
-        if (s.cull_clusters)
-            mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
-                                                  highlights ? -1e30f : s.sc_threshold, margin, s.lines.dwkr));
-        else
-            mesh.draw_triangles();
+        draw_culled([&] {
+            return contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
+                                     highlights ? -1e30f : s.sc_threshold, margin, s.lines.dwkr);
+        });
     }
     // Ridges, valleys, parabolic and mean-zero lines.
     if (s.lines.curvature_lines()) {
@@ -139,7 +132,9 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         curvature_lines_.set("u_rv_threshold", s.rv_threshold);
         curvature_lines_.set("u_feature_size", mesh.feature_size());
         curvature_lines_.set("u_fade", int(s.fade));
-        draw_visible();
+        draw_culled([&] {
+            return curvature_line_runs(mesh.clusters(), frame, s.hidden_lines, margin, s.lines, s.rv_threshold);
+        });
     }
     // Apparent ridges and principal highlights.
     if (s.lines.view_ridges()) {
@@ -150,14 +145,12 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         view_ridges_.set("u_ph_threshold", s.ph_threshold);
         view_ridges_.set("u_fade", int(s.fade));
         view_ridges_.set("u_feature_size", mesh.feature_size());
-        draw_visible();
+        draw_culled([&] {
+            return view_ridge_runs(mesh.clusters(), frame, s.hidden_lines, margin, s.lines, s.ph_threshold);
+        });
     }
     // Isophotes (n.l levels, the light as the shading's, in model coordinates)
     // and topographic lines (height levels along y across the bounding sphere).
-    auto draw_runs = [&](const std::vector<FaceRun>& runs) {
-        if (s.cull_clusters) mesh.draw_triangles(runs);
-        else mesh.draw_triangles();
-    };
     if (s.lines.isophotes && s.isophote_count > 0) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 0);
@@ -168,8 +161,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_first", levels.first);
         level_lines_.set("u_step", levels.step);
         level_lines_.set("u_count", levels.count);
-        draw_runs(s.cull_clusters ? isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, light, levels)
-                                  : std::vector<FaceRun>{});
+        draw_culled([&] { return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, light, levels); });
     }
     if (s.lines.topo && s.topo_count > 0) {
         set_common(level_lines_, mesh, frame, s);
@@ -179,8 +171,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_first", levels.first);
         level_lines_.set("u_step", levels.step);
         level_lines_.set("u_count", levels.count);
-        draw_runs(s.cull_clusters ? topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels)
-                                  : std::vector<FaceRun>{});
+        draw_culled([&] { return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels); });
     }
     // Direction glyphs, 10 pixels long, at about one vertex per 600 pixels of the image.
     if (s.vectors != 0 && mesh.vertex_count() > 0) {

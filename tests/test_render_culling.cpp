@@ -70,8 +70,8 @@ TEST_CASE("cluster culling gives the same lines as drawing every triangle", "[re
     SECTION("built-in model") { check_same_with_and_without_culling(make_default_model(), "default"); }
 }
 
-TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours, and level lines skip "
-          "clusters without a level exactly",
+TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours, the rest of their "
+          "culling none",
           "[render][culling]") {
     const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
     const SurfaceFields fields = compute_surface_fields(mesh);
@@ -93,9 +93,11 @@ TEST_CASE("culling back-facing clusters in the other line passes changes only pi
     CHECK(test::count_ink(all) > 2000);
     CHECK(differ < test::count_ink(all) / 100);
 
-    // With hidden lines nothing back-facing is skipped, and the level lines'
-    // own culling (no level in a cluster's range of n.l or heights) is exact.
-    render::LineSelection levels{false, false, false, false, false, false, false, false, true, true};
+    // With hidden lines nothing back-facing is skipped, and the passes' own
+    // culling (no level in a cluster's range of n.l or heights, no sign change
+    // of K or H, |kmax| or the highlight strength below the threshold) is exact.
+    render::LineSelection levels{false, false, false, false, true, true, true, true, true, true};
+    levels.principal_highlights = true;
     s = test::lines_only(levels);
     s.hidden_lines = true;
     s.isophote_count = 8;
