@@ -115,8 +115,8 @@ const std::vector<AppearanceSetting>& appearance_settings() {
              1e6f, &R::sh_threshold, 0, 2, true),
         real("ph-threshold", "S",
              "principal highlights where (kmax^2 - kmin^2) n.v > S / fs^2, kmax the curvature of larger magnitude, "
-             "dimensionless (default 0.2)", 0, 1e6f,
-             &R::ph_threshold, 0, 4, true),
+             "dimensionless (default 0.2)",
+             0, 1e6f, &R::ph_threshold, 0, 4, true),
         count("isophotes", "number of isophotes (lines of n.l = (k - 1/2) / N, the light as the shading's) (default 4)",
               1, 16, &R::isophote_count, 16),
         count("topo", "number of topographic lines (heights along y, evenly across the model) (default 12)", 1, 1000,

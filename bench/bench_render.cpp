@@ -1,12 +1,17 @@
 // Frame time of the line-drawing renderer at 1024x768 (issue 3, "Speed"):
 // median of 20 frames, for plain Lambertian shading and for contours +
-// suggestive contours + hatching, on the default model and bunny-1M.ply.
-//   bench_render [--size WxH] [--frames N] [MESH ...]   (default: built-in model and
-//   ../shared/meshes/bunny-1M.ply next to the repository)
+// suggestive contours + hatching, on the default model and bunny-1M.ply;
+// and with every line type of --lines on (issue 12: at most 1.5x the
+// contours + suggestive frame), the ratio printed.
+//   bench_render [--size WxH] [--frames N] [--each] [--detail PX] [MESH ...]   (default: built-in
+//   model and ../shared/meshes/bunny-1M.ply next to the repository; --each: also every line type
+//   alone; --detail: the fields at that scale for the view, as kappa render draws by default,
+//   instead of the raw 1-ring fields)
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/surface_analysis.h"
+#include "render/detail_fields.h"
 #include "render/egl_context.h"
 #include "render/framebuffer.h"
 #include "render/renderer.h"
@@ -62,9 +67,13 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
 
 int main(int argc, char** argv) {
     int width = 1024, height = 768, frames = 20;
+    bool each = false;
+    float detail = 0;
     std::vector<std::string> meshes;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
+        if (!std::strcmp(argv[i], "--each")) each = true;
+        else if (!std::strcmp(argv[i], "--detail") && i + 1 < argc) detail = float(std::atof(argv[++i]));
+        else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
         else meshes.push_back(argv[i]);
     }
@@ -90,11 +99,20 @@ int main(int argc, char** argv) {
     render::RenderSettings lines_gpu = lines, lines_cpu = lines;  // where the contour pass's lines are made
     lines_gpu.line_extraction = render::LineExtraction::Gpu;
     lines_cpu.line_extraction = render::LineExtraction::Cpu;
+    render::RenderSettings every = lines;  // every kind of render::line_kinds() but the exterior-only silhouette
+    for (const render::LineKind& k : render::line_kinds()) every.lines.*(k.flag) = k.name != "silhouette";
     std::vector<Config> configs = {{"lambert", plain}, {"lambert+contours+suggestive", lines},
                                    {"lambert+contours+suggestive+hatching", all},
                                    {"  (contours+suggestive, no culling)", lines_unculled},
                                    {"  (contours+suggestive, geometry shader)", lines_gpu},
-                                   {"  (contours+suggestive, CPU extraction)", lines_cpu}};
+                                   {"  (contours+suggestive, CPU extraction)", lines_cpu},
+                                   {"lambert+every line type", every}};
+    if (each)
+        for (const render::LineKind& k : render::line_kinds()) {
+            render::RenderSettings one = plain;
+            one.lines.*(k.flag) = true;
+            configs.push_back({k.name.c_str(), one});
+        }
     for (auto& c : configs) c.settings.msaa = false;
     auto with_msaa = configs;
     for (auto& c : with_msaa) c.settings.msaa = true;
@@ -112,17 +130,27 @@ int main(int argc, char** argv) {
         const SurfaceFields fields = compute_surface_fields(mesh);
         renderer.set_mesh(mesh, fields, feature_size(mesh, fields));
         const auto camera = render::Camera::framing(renderer.mesh()->bounds(), 30.0f, float(width) / float(height));
-        std::printf("\n%s: %zu vertices, %zu faces\n", path.empty() ? "built-in model" : path.c_str(),
-                    mesh.vertex_count(), mesh.face_count());
+        if (detail > 0) {
+            render::DetailSource source = render::make_detail_source(mesh, fields);
+            const render::DetailFields d = render::detail_fields(mesh, source, fields, camera, height, detail);
+            renderer.set_mesh(mesh, d.fields, d.feature_size, d.fine_normals);
+        }
+        std::printf("\n%s: %zu vertices, %zu faces, %s\n", path.empty() ? "built-in model" : path.c_str(),
+                    mesh.vertex_count(), mesh.face_count(), detail > 0 ? "detail fields" : "raw fields");
+        for (auto* set : {&configs, &with_msaa})
+            for (auto& c : *set) c.settings.detail = detail;
         for (const auto* set : {&configs, &with_msaa}) {
-            FrameTime base{};
+            std::vector<FrameTime> times;
             for (const auto& c : *set) {
                 const FrameTime t = median_frame_ms(renderer, camera, c.settings, target, frames);
-                if (&c == &set->front()) base = t;
+                times.push_back(t);
+                const FrameTime& base = times.front();
                 std::printf("  %-38s %s  wall %8.2f ms (%+4.0f%%)  cpu %8.2f ms (%+4.0f%%)\n", c.name,
                             c.settings.msaa ? "msaa 4x" : "no msaa", t.wall_ms, 100.0 * (t.wall_ms / base.wall_ms - 1.0),
                             t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0));
             }
+            std::printf("  every line type / contours+suggestive: wall %.2fx, cpu %.2fx\n",
+                        times[4].wall_ms / times[1].wall_ms, times[4].cpu_ms / times[1].cpu_ms);
         }
     }
     return 0;

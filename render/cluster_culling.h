@@ -24,6 +24,7 @@
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/frame_params.h"
+#include "render/render_settings.h"
 
 #include <cstdint>
 #include <vector>
@@ -36,6 +37,12 @@ struct MeshClusters {
     std::vector<uint32_t> first_face;  // size clusters + 1, in the uploaded (cluster) order
     std::vector<uint8_t> may_have_suggestive;
     std::vector<float> max_strength;  // bound on Dw kr fs^2 over the reliable front-facing vertices, any view
+    // View-independent bounds for the curvature lines, over the faces whose
+    // vertices are all reliable (the shaders skip the others):
+    std::vector<uint8_t> may_have_parabolic;  // a face whose vertices' K = k1 k2 differ in sign (> 0 or not)
+    std::vector<uint8_t> may_have_mean_zero;  // likewise H = (k1 + k2) / 2
+    std::vector<float> max_kmax;              // largest |kmax| fs: ridges and valleys need more than the threshold
+    std::vector<float> max_highlight;         // largest (kmax^2 - kmin^2) fs^2: principal highlights likewise
 
     size_t size() const { return bounds.size(); }
 };
@@ -52,8 +59,40 @@ struct FaceRun {
 
 // The runs of faces the contour pass must draw for this frame. margin_px:
 // how far outside the image a line may still cover pixels inside it;
-// sc_threshold: the dimensionless s of the suggestive-contour test.
+// sc_threshold: the dimensionless s of the suggestive-contour test;
+// any_front: also every cluster not entirely back-facing (the Dw kr lines,
+// drawn wherever n.v > 0).
 std::vector<FaceRun> contour_pass_runs(const MeshClusters& clusters, const FrameParams& frame, bool contours,
-                                       bool suggestive, float sc_threshold, float margin_px);
+                                       bool suggestive, float sc_threshold, float margin_px, bool any_front = false);
+
+// The other line passes skip the clusters outside the view, the entirely
+// back-facing ones unless `back_facing` (hidden lines drawn: their lines
+// are behind the front surface, only within the occlusion tolerance next to
+// a contour, half an edge, could one have shown), and those that cannot hold
+// a line of the kinds on:
+//   curvature_line_runs: ridges and valleys (rv_threshold: their S), K = 0, H = 0
+//     (shaders/curvature_lines_geom.glsl), from MeshClusters' bounds;
+//   view_ridge_runs: apparent ridges (none skipped: the view-dependent
+//     curvature has no bound) and principal highlights (ph_threshold: their s);
+//   isophote_runs, topo_runs: below.
+std::vector<FaceRun> curvature_line_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                         float margin_px, const LineSelection& lines, float rv_threshold);
+std::vector<FaceRun> view_ridge_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                     float margin_px, const LineSelection& lines, float ph_threshold);
+
+// Levels first + k step, k = 0 .. count - 1.
+struct LevelSet {
+    float first, step;
+    int count;
+};
+
+// The clusters that can cross a level: isophotes (n.l
+// with the unit light direction over the cone of the fields' normals) and
+// topographic lines (heights y over the bounding sphere). Exact: the values
+// interpolated over a triangle lie between its vertices'.
+std::vector<FaceRun> isophote_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                                   float margin_px, glm::vec3 light, const LevelSet& levels);
+std::vector<FaceRun> topo_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
+                               float margin_px, const LevelSet& levels);
 
 }  // namespace kappa::render

@@ -21,6 +21,7 @@ std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files, s
 
 LineRenderer::LineRenderer()
     : isolines_(line_program({"line_quad.glsl", "isolines_geom.glsl"})),
+      isolines_highlights_(line_program({"line_quad.glsl", "isolines_geom.glsl"}, "#define KAPPA_HIGHLIGHTS\n")),
       boundaries_(line_program({"line_quad.glsl", "boundary_geom.glsl"})),
       curvature_lines_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "curvature_lines_vert.glsl"}},
                         {GL_GEOMETRY_SHADER, {"line_quad.glsl", "curvature_lines_geom.glsl"}},
@@ -61,6 +62,13 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
 
+    // Each pass draws every triangle, or with culling the runs of clusters
+    // that can hold its lines (render/cluster_culling.h).
+    const float margin = 0.5f * s.line_width + 2.0f;  // pixels a line may reach beyond its centre
+    auto draw_culled = [&](auto runs) {
+        if (s.cull_clusters) mesh.draw_triangles(runs());
+        else mesh.draw_triangles();
+    };
     // Contours, suggestive contours, suggestive highlights and the Dw kr lines:
     // one pass over the triangles.
     const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
@@ -68,28 +76,28 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     if (cpu_isolines) {
         cpu_isolines_.draw(mesh, frame, s);
     } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
-        set_common(isolines_, mesh, frame, s);
-        isolines_.set("u_contours", int(contours));
-        isolines_.set("u_silhouette_only", int(silhouette_only));
-        isolines_.set("u_suggestive", int(s.lines.suggestive));
-        isolines_.set("u_sc_threshold", s.sc_threshold);
-        isolines_.set("u_highlights", int(highlights));
-        isolines_.set("u_sh_threshold", s.sh_threshold);
-        isolines_.set("u_dwkr", int(s.lines.dwkr));
-        isolines_.set("u_fade", int(s.fade));
+        // The variant that can also draw highlights and Dw kr lines only when they are on.
+        ShaderProgram& p = highlights || s.lines.dwkr ? isolines_highlights_ : isolines_;
+        set_common(p, mesh, frame, s);
+        p.set("u_contours", int(contours));
+        p.set("u_silhouette_only", int(silhouette_only));
+        p.set("u_suggestive", int(s.lines.suggestive));
+        p.set("u_sc_threshold", s.sc_threshold);
+        p.set("u_highlights", int(highlights));
+        p.set("u_sh_threshold", s.sh_threshold);
+        p.set("u_dwkr", int(s.lines.dwkr));
+        p.set("u_fade", int(s.fade));
         // One pixel spans 2 w / (P[1][1] height) model units at camera distance w.
-        isolines_.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
+        p.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
         // Highlights need a zero of kr like suggestive contours, but no bound on
         // -Dw kr holds (its cot(theta) term grows without limit): no strength
         // test for them. The Dw kr lines can be anywhere in front.
-        if (s.cull_clusters && !s.lines.dwkr)
-            mesh.draw_triangles(contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
-                                                  highlights ? -1e30f : s.sc_threshold, 0.5f * s.line_width + 2.0f));
-        else
-            mesh.draw_triangles();
+        draw_culled([&] {
+            return contour_pass_runs(mesh.clusters(), frame, contours, s.lines.suggestive || highlights,
+                                     highlights ? -1e30f : s.sc_threshold, margin, s.lines.dwkr);
+        });
     }
-    // Ridges, valleys, parabolic and mean-zero lines: every triangle (they do
-    // not depend on the view, so the contour pass's culling does not apply).
+    // Ridges, valleys, parabolic and mean-zero lines.
     if (s.lines.curvature_lines()) {
         set_common(curvature_lines_, mesh, frame, s);
         curvature_lines_.set("u_parabolic", int(s.lines.parabolic));
@@ -99,10 +107,11 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         curvature_lines_.set("u_rv_threshold", s.rv_threshold);
         curvature_lines_.set("u_feature_size", mesh.feature_size());
         curvature_lines_.set("u_fade", int(s.fade));
-        mesh.draw_triangles();
+        draw_culled([&] {
+            return curvature_line_runs(mesh.clusters(), frame, s.hidden_lines, margin, s.lines, s.rv_threshold);
+        });
     }
-    // Apparent ridges and principal highlights: every triangle (apparent
-    // ridges follow contours onto barely back-facing triangles).
+    // Apparent ridges and principal highlights.
     if (s.lines.view_ridges()) {
         set_common(view_ridges_, mesh, frame, s);
         view_ridges_.set("u_apparent_ridges", int(s.lines.apparent_ridges));
@@ -111,28 +120,33 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         view_ridges_.set("u_ph_threshold", s.ph_threshold);
         view_ridges_.set("u_fade", int(s.fade));
         view_ridges_.set("u_feature_size", mesh.feature_size());
-        mesh.draw_triangles();
+        draw_culled([&] {
+            return view_ridge_runs(mesh.clusters(), frame, s.hidden_lines, margin, s.lines, s.ph_threshold);
+        });
     }
     // Isophotes (n.l levels, the light as the shading's, in model coordinates)
     // and topographic lines (height levels along y across the bounding sphere).
     if (s.lines.isophotes && s.isophote_count > 0) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 0);
-        level_lines_.set("u_light_model", glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame)));
+        const glm::vec3 light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
+        level_lines_.set("u_light_model", light);
         const float step = 1.0f / float(s.isophote_count);
-        level_lines_.set("u_first", 0.5f * step);
-        level_lines_.set("u_step", step);
-        level_lines_.set("u_count", s.isophote_count);
-        mesh.draw_triangles();
+        const LevelSet levels{0.5f * step, step, s.isophote_count};
+        level_lines_.set("u_first", levels.first);
+        level_lines_.set("u_step", levels.step);
+        level_lines_.set("u_count", levels.count);
+        draw_culled([&] { return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, light, levels); });
     }
     if (s.lines.topo && s.topo_count > 0) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 1);
         const float step = 2.0f * mesh.bounds().radius / float(s.topo_count);
-        level_lines_.set("u_first", mesh.bounds().center.y - mesh.bounds().radius + 0.5f * step);
-        level_lines_.set("u_step", step);
-        level_lines_.set("u_count", s.topo_count);
-        mesh.draw_triangles();
+        const LevelSet levels{mesh.bounds().center.y - mesh.bounds().radius + 0.5f * step, step, s.topo_count};
+        level_lines_.set("u_first", levels.first);
+        level_lines_.set("u_step", levels.step);
+        level_lines_.set("u_count", levels.count);
+        draw_culled([&] { return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels); });
     }
     // Direction glyphs, 10 pixels long, at about one vertex per 600 pixels of the image.
     if (s.vectors != 0 && mesh.vertex_count() > 0) {

@@ -1,8 +1,6 @@
-// Line passes: occluding contours, suggestive contours, boundaries and
-// hatching strokes as screen-space quads (see shaders/line_quad.glsl for
-// why), accumulated as
-// anti-aliased coverage with GL_MAX blending into the bound one-channel
-// framebuffer. Occlusion is tested against the surface depth texture.
+// Line passes: every line type of --lines, as screen-space quads (see
+// shaders/line_quad.glsl for why), accumulated as anti-aliased coverage with
+// GL_MAX blending into the bound one-channel framebuffer. Occlusion is tested against the surface depth texture.
 #pragma once
 
 #include "render/cpu_isolines.h"
@@ -23,7 +21,8 @@ public:
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
                     const RenderSettings& settings);
-    ShaderProgram isolines_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_, creases_;
+    ShaderProgram isolines_, isolines_highlights_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_,
+        creases_;
     CpuIsolinePass cpu_isolines_;
 };
 

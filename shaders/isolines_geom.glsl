@@ -10,7 +10,11 @@
 //   dwkr:       Dw kr * fs^2 = the suggestive-contour threshold, n.v > 0
 //               (where suggestive contours begin to pass the test).
 layout(triangles) in;
+#ifdef KAPPA_HIGHLIGHTS
 layout(triangle_strip, max_vertices = 16) out;  // contour, suggestive contour, highlight, dwkr
+#else
+layout(triangle_strip, max_vertices = 8) out;  // contour, suggestive contour (fewer outputs: faster on llvmpipe)
+#endif
 
 in LineVertex {
     vec3 position;
@@ -143,6 +147,8 @@ void dwkr_segment() {
 void main() {
     if (u_contours != 0) contour_segment();
     if (u_suggestive != 0) suggestive_segment(1.0, u_sc_threshold);
+#ifdef KAPPA_HIGHLIGHTS
     if (u_highlights != 0) suggestive_segment(-1.0, u_sh_threshold);
     if (u_dwkr != 0) dwkr_segment();
+#endif
 }

@@ -4,6 +4,7 @@
 uniform mat4 u_mvp;
 uniform vec3 u_eye;            // model coordinates
 uniform float u_feature_size;  // fs
+uniform int u_apparent_ridges; // 0: the view-dependent curvature is not needed
 
 out ViewRidgeVertex {
     vec3 position;
@@ -19,12 +20,17 @@ out ViewRidgeVertex {
 
 void main() {
     vec3 to_eye = u_eye - a_position;
-    ViewCurvature vc = view_curvature(a_curv, a_dcurv, a_normal, a_d1, a_d2, to_eye);
     vec3 v = normalize(to_eye);
     v_out.position = a_position;
-    v_out.view_curv = sqrt(max(vc.q1, 0.0)) * u_feature_size;
-    v_out.t1 = vc.t1.x * a_d1 + vc.t1.y * a_d2;
-    v_out.dq1 = vc.dq1;
+    v_out.view_curv = 0.0;
+    v_out.t1 = vec3(0.0);
+    v_out.dq1 = 0.0;
+    if (u_apparent_ridges != 0) {
+        ViewCurvature vc = view_curvature(a_curv, a_dcurv, a_normal, a_d1, a_d2, to_eye);
+        v_out.view_curv = sqrt(max(vc.q1, 0.0)) * u_feature_size;
+        v_out.t1 = vc.t1.x * a_d1 + vc.t1.y * a_d2;
+        v_out.dq1 = vc.dq1;
+    }
     // rtsc's curv1 is the curvature of larger magnitude (trimesh2's order), not kappa's k1.
     bool first = abs(a_curv.x) >= abs(a_curv.y);
     v_out.kmax = first ? a_curv.x : a_curv.y;

@@ -1,5 +1,7 @@
 // Cluster culling of the contour pass (render/cluster_culling.h) skips work,
 // never lines: the image is the same pixel for pixel with and without it.
+// The other line passes skip the clusters outside the view and the entirely
+// back-facing ones: the same lines but for a few pixels near contours.
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
@@ -38,8 +40,11 @@ void check_same_with_and_without_culling(const Mesh& mesh, const std::string& na
                           {{-2 * r, r, -2 * r}, o, 30.0f},
                           {{0, 3 * r, 0.1f * r}, o, 30.0f},
                           {{0.7f * r, 0, 2 * r}, {0.7f * r, 0, 0}, 15.0f}};
+    render::LineSelection highlights{false, false, false}, dwkr{true, false, false};
+    highlights.suggestive_highlights = true;
+    dwkr.dwkr = true;
     for (const auto& lines : {render::LineSelection{true, true, false}, render::LineSelection{true, false, false},
-                              render::LineSelection{false, true, false}}) {
+                              render::LineSelection{false, true, false}, highlights, dwkr}) {
         for (const View& v : views) {
             const auto camera = render::Camera::look_at(bounds.center + v.eye, bounds.center + v.target, {0, 1, 0}, v.fov);
             auto s = test::lines_only(lines);
@@ -50,8 +55,8 @@ void check_same_with_and_without_culling(const Mesh& mesh, const std::string& na
             s.cull_clusters = true;
             const auto culled = test::render(mesh, fields, fs, camera, s, 320, 240);
             test::maybe_save(culled, name + "_culled");
-            INFO(name << ", eye " << v.eye.x << "," << v.eye.y << "," << v.eye.z << ", contours " << lines.contours
-                      << ", suggestive " << lines.suggestive);
+            INFO(name << ", eye " << v.eye.x << "," << v.eye.y << "," << v.eye.z << ", lines "
+                      << render::to_string(lines));
             CHECK(test::count_ink(all) > 100);
             CHECK(culled.pixels == all.pixels);
         }
@@ -63,6 +68,46 @@ void check_same_with_and_without_culling(const Mesh& mesh, const std::string& na
 TEST_CASE("cluster culling gives the same lines as drawing every triangle", "[render][culling]") {
     SECTION("bunny") { check_same_with_and_without_culling(load_mesh(test::shared_mesh("bunny.ply")), "bunny"); }
     SECTION("built-in model") { check_same_with_and_without_culling(make_default_model(), "default"); }
+}
+
+TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours, the rest of their "
+          "culling none",
+          "[render][culling]") {
+    const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    const float fs = feature_size(mesh, fields);
+    const auto bounds = render::bounding_sphere(mesh);
+    const auto camera = render::Camera::look_at(bounds.center + glm::vec3(-2, 1, -2) * bounds.radius, bounds.center,
+                                                {0, 1, 0}, 30.0f);
+    render::LineSelection lines{false, false, false, false, true, true, true, true, true, true};
+    lines.apparent_ridges = lines.principal_highlights = lines.dwkr = true;
+    auto s = test::lines_only(lines);
+    s.cull_clusters = false;
+    const auto all = test::render(mesh, fields, fs, camera, s, 320, 240);
+    s.cull_clusters = true;
+    const auto culled = test::render(mesh, fields, fs, camera, s, 320, 240);
+    size_t differ = 0;
+    for (int y = 0; y < all.height; ++y)
+        for (int x = 0; x < all.width; ++x) differ += test::is_ink(all.at(x, y)) != test::is_ink(culled.at(x, y));
+    INFO("ink " << test::count_ink(all) << ", pixels whose ink differs " << differ);
+    CHECK(test::count_ink(all) > 2000);
+    CHECK(differ < test::count_ink(all) / 100);
+
+    // With hidden lines nothing back-facing is skipped, and the passes' own
+    // culling (no level in a cluster's range of n.l or heights, no sign change
+    // of K or H, |kmax| or the highlight strength below the threshold) is exact.
+    render::LineSelection levels{false, false, false, false, true, true, true, true, true, true};
+    levels.principal_highlights = true;
+    s = test::lines_only(levels);
+    s.hidden_lines = true;
+    s.isophote_count = 8;
+    s.topo_count = 30;
+    s.cull_clusters = false;
+    const auto every = test::render(mesh, fields, fs, camera, s, 320, 240);
+    s.cull_clusters = true;
+    const auto skipped = test::render(mesh, fields, fs, camera, s, 320, 240);
+    CHECK(test::count_ink(every) > 2000);
+    CHECK(skipped.pixels == every.pixels);
 }
 
 TEST_CASE("cluster culling skips most of a sphere's triangles", "[render][culling]") {

@@ -56,9 +56,8 @@ void setting_slider(const char* name, render::RenderSettings& s) {
     if (const app::AppearanceSetting* a = app::find_appearance_setting(name)) setting_slider(*a, s);
 }
 
-// The line kinds in the groups of app::line_groups(): a checkbox each (with
-// its key), then the sliders of the thresholds the lines
-// that are on use.
+// The line kinds of one of app::line_groups(): a checkbox each (with its
+// key), then the sliders of the thresholds that the kinds that are on use.
 void line_group(const app::LineGroup& group, render::RenderSettings& s) {
     ImGui::TextDisabled("%s", group.title.c_str());
     std::vector<std::string> sliders;
