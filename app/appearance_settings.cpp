@@ -182,8 +182,8 @@ const std::vector<AppearanceSetting>& appearance_settings() {
          "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)},
         {"msaa", "on|off", "4x multisampling of the surface (default on)", "on or off", on_off(&R::msaa)},
         {"line-extraction", "auto|gpu|cpu",
-         "where contours, suggestive contours and highlights are extracted: on the CPU (fast on software GL such "
-         "as llvmpipe), in a geometry shader (fast on GPUs), or auto: the CPU on software GL (default auto)",
+         "where the lines are extracted: on the CPU (fast on software GL such as llvmpipe), in geometry shaders "
+         "(fast on GPUs), or auto: the CPU on software GL (default auto)",
          "auto, gpu or cpu",
          [](R& s, const std::string& v) {
              if (v == "auto") s.line_extraction = render::LineExtraction::Auto;

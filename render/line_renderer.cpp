@@ -52,7 +52,7 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
     p.set("u_hidden_lines", int(s.hidden_lines));
 }
 
-void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_isolines,
+void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_lines,
                         GLuint surface_depth_texture) {
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -73,8 +73,8 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     // one pass over the triangles.
     const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
     const bool highlights = s.lines.suggestive_highlights;
-    if (cpu_isolines) {
-        cpu_isolines_.draw(mesh, frame, s);
+    if (cpu_lines) {
+        cpu_lines_.draw(mesh, frame, s);  // every kind drawn by the four passes below
     } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
         // The variant that can also draw highlights and Dw kr lines only when they are on.
         ShaderProgram& p = highlights || s.lines.dwkr ? isolines_highlights_ : isolines_;
@@ -98,7 +98,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         });
     }
     // Ridges, valleys, parabolic and mean-zero lines.
-    if (s.lines.curvature_lines()) {
+    if (s.lines.curvature_lines() && !cpu_lines) {
         set_common(curvature_lines_, mesh, frame, s);
         curvature_lines_.set("u_parabolic", int(s.lines.parabolic));
         curvature_lines_.set("u_mean_zero", int(s.lines.mean_zero));
@@ -112,7 +112,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         });
     }
     // Apparent ridges and principal highlights.
-    if (s.lines.view_ridges()) {
+    if (s.lines.view_ridges() && !cpu_lines) {
         set_common(view_ridges_, mesh, frame, s);
         view_ridges_.set("u_apparent_ridges", int(s.lines.apparent_ridges));
         view_ridges_.set("u_principal_highlights", int(s.lines.principal_highlights));
@@ -126,7 +126,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     }
     // Isophotes (n.l levels, the light as the shading's, in model coordinates)
     // and topographic lines (height levels along y across the bounding sphere).
-    if (s.lines.isophotes && s.isophote_count > 0) {
+    if (s.lines.isophotes && s.isophote_count > 0 && !cpu_lines) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 0);
         const glm::vec3 light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
@@ -138,7 +138,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_count", levels.count);
         draw_culled([&] { return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, light, levels); });
     }
-    if (s.lines.topo && s.topo_count > 0) {
+    if (s.lines.topo && s.topo_count > 0 && !cpu_lines) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 1);
         const float step = 2.0f * mesh.bounds().radius / float(s.topo_count);

@@ -3,7 +3,7 @@
 // GL_MAX blending into the bound one-channel framebuffer. Occlusion is tested against the surface depth texture.
 #pragma once
 
-#include "render/cpu_isolines.h"
+#include "render/cpu_lines.h"
 #include "render/frame_params.h"
 #include "render/mesh_buffers.h"
 #include "render/render_settings.h"
@@ -14,8 +14,8 @@ namespace kappa::render {
 class LineRenderer {
 public:
     LineRenderer();  // compiles the shaders (GL context current)
-    // cpu_isolines: the contour pass's lines come from render/cpu_isolines.h.
-    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_isolines,
+    // cpu_lines: the lines of every kind but creases, boundaries and glyphs come from render/cpu_lines.h.
+    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
               GLuint surface_depth_texture);
 
 private:
@@ -23,7 +23,7 @@ private:
                     const RenderSettings& settings);
     ShaderProgram isolines_, isolines_highlights_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_,
         creases_;
-    CpuIsolinePass cpu_isolines_;
+    CpuLinePass cpu_lines_;
 };
 
 }  // namespace kappa::render

@@ -17,9 +17,9 @@ namespace kappa::render {
 enum class Shading { None, Lambert, Toon, Hemisphere, ToonBW, Gooch };
 enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
 enum class Hatching { None, Min, Max, Cross };
-// Where contours, suggestive contours and highlights and Dw kr lines are
-// extracted: auto = on the CPU when the GL is a software renderer
-// (llvmpipe), in a geometry shader otherwise (render/cpu_isolines.h).
+// Where the lines of --lines (all but creases and boundaries) are extracted:
+// auto = on the CPU when the GL is a software renderer (llvmpipe), in
+// geometry shaders otherwise (render/cpu_lines.h).
 enum class LineExtraction { Auto, Gpu, Cpu };
 
 // Per-vertex direction glyphs (--vectors), as bits.

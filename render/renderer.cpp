@@ -73,10 +73,10 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     glBindFramebuffer(GL_FRAMEBUFFER, lines_fb_.id());
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    const bool cpu_isolines = s.line_extraction == LineExtraction::Cpu ||
+    const bool cpu_lines = s.line_extraction == LineExtraction::Cpu ||
                               (s.line_extraction == LineExtraction::Auto && software_gl_);
     if (mesh_ && (s.lines.any() || s.vectors != 0))
-        line_pass_.draw(*mesh_, frame, s, cpu_isolines, surface_fb_.depth_texture());
+        line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture());
     stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
 
     // 3. Composite into the target, then the colour bar on top.

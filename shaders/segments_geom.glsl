@@ -7,7 +7,7 @@ layout(triangle_strip, max_vertices = 4) out;
 in SegmentVertex {
     float alpha;
     float tolerance;
-    float contour;
+    float kind;
 } v_in[];
 
 uniform float u_scale_tolerance;  // detail (px) x pixel size per unit of camera distance; 0 without detail
@@ -15,7 +15,8 @@ uniform int u_silhouette_only;    // contours only where they border the backgro
 
 void main() {
     float w = max(gl_in[0].gl_Position.w, gl_in[1].gl_Position.w);
-    exterior_only_ = v_in[0].contour > 0.5 && u_silhouette_only != 0 ? 1.0 : 0.0;
+    exterior_only_ = v_in[0].kind > 1.5 && u_silhouette_only != 0 ? 1.0 : 0.0;
+    float scale = v_in[0].kind > 0.5 ? u_scale_tolerance * w : 0.0;
     emit_segment(gl_in[0].gl_Position, gl_in[1].gl_Position, v_in[0].alpha, v_in[1].alpha,
-                 max(v_in[0].tolerance, u_scale_tolerance * w));
+                 max(v_in[0].tolerance, scale));
 }

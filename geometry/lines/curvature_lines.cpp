@@ -66,8 +66,13 @@ void ridge_or_valley(const Face& t, const glm::vec3 p[3], const SurfaceFields& f
 void extract_curvature_lines(const Mesh& mesh, const SurfaceFields& f, const LineExtractionOptions& o,
                              ExtractedLines& lines) {
     if (!(o.parabolic || o.mean_zero || o.ridges || o.valleys)) return;
-    for (const Face& t : mesh.faces) {
-        if (f.unreliable(t[0]) || f.unreliable(t[1]) || f.unreliable(t[2])) continue;
+    for (const Face& t : mesh.faces) curvature_lines_of_face(mesh, t, f, o, lines);
+}
+
+void curvature_lines_of_face(const Mesh& mesh, const Face& t, const SurfaceFields& f, const LineExtractionOptions& o,
+                             ExtractedLines& lines) {
+    {
+        if (f.unreliable(t[0]) || f.unreliable(t[1]) || f.unreliable(t[2])) return;
         const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
         if (o.parabolic) {
             const float K[3] = {f.k1[t[0]] * f.k2[t[0]], f.k1[t[1]] * f.k2[t[1]], f.k1[t[2]] * f.k2[t[2]]};

@@ -19,5 +19,8 @@ namespace kappa {
 // valleys) to `lines`.
 void extract_curvature_lines(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& options,
                              ExtractedLines& lines);
+// The same for one triangle (for passes that choose their triangles).
+void curvature_lines_of_face(const Mesh& mesh, const Face& face, const SurfaceFields& fields,
+                             const LineExtractionOptions& options, ExtractedLines& lines);
 
 }  // namespace kappa

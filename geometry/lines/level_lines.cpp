@@ -10,39 +10,53 @@ using namespace lines;
 
 namespace {
 
-void levels(const Mesh& mesh, const std::vector<float>& value, float first, float step, int count,
-            std::vector<LineSegment>& out) {
+void levels_of_face(const Mesh& mesh, const Face& t, const std::vector<float>& value, float first, float step,
+                    int count, std::vector<LineSegment>& out) {
     if (count <= 0 || !(step > 0)) return;
-    for (const Face& t : mesh.faces) {
-        const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
-        const float v[3] = {value[t[0]], value[t[1]], value[t[2]]};
-        const float lo = std::min({v[0], v[1], v[2]}), hi = std::max({v[0], v[1], v[2]});
-        const int k0 = std::max(0, int(std::ceil((lo - first) / step)));
-        const int k1 = std::min(count - 1, int(std::floor((hi - first) / step)));
-        for (int k = k0; k <= k1; ++k) {
-            const float level = first + float(k) * step;
-            const float f[3] = {v[0] - level, v[1] - level, v[2] - level};
-            Crossing c0, c1;
-            if (find_crossings(t, f, c0, c1))
-                out.push_back({point_at(c0, p), point_at(c1, p), 1, 1, level, level, half_longest_edge(p)});
-        }
+    const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
+    const float v[3] = {value[t[0]], value[t[1]], value[t[2]]};
+    const float lo = std::min({v[0], v[1], v[2]}), hi = std::max({v[0], v[1], v[2]});
+    const int k0 = std::max(0, int(std::ceil((lo - first) / step)));
+    const int k1 = std::min(count - 1, int(std::floor((hi - first) / step)));
+    for (int k = k0; k <= k1; ++k) {
+        const float level = first + float(k) * step;
+        const float f[3] = {v[0] - level, v[1] - level, v[2] - level};
+        Crossing c0, c1;
+        if (find_crossings(t, f, c0, c1))
+            out.push_back({point_at(c0, p), point_at(c1, p), 1, 1, level, level, half_longest_edge(p)});
     }
 }
 
 }  // namespace
 
-void extract_level_lines(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& o,
-                         ExtractedLines& lines) {
-    std::vector<float> value(mesh.vertex_count());
+LevelValues level_values(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& o) {
+    LevelValues v;
     if (o.isophotes && o.isophote_count > 0) {
-        for (size_t i = 0; i < value.size(); ++i) value[i] = glm::dot(fields.normals[i], o.light);
-        const float step = 1.0f / float(o.isophote_count);
-        levels(mesh, value, 0.5f * step, step, o.isophote_count, lines[int(LineType::Isophote)]);
+        v.isophote.resize(mesh.vertex_count());
+        for (size_t i = 0; i < v.isophote.size(); ++i) v.isophote[i] = glm::dot(fields.normals[i], o.light);
     }
     if (o.topo && o.topo_count > 0) {
-        for (size_t i = 0; i < value.size(); ++i) value[i] = mesh.positions[i].y;
-        levels(mesh, value, o.topo_first, o.topo_step, o.topo_count, lines[int(LineType::Topo)]);
+        v.height.resize(mesh.vertex_count());
+        for (size_t i = 0; i < v.height.size(); ++i) v.height[i] = mesh.positions[i].y;
     }
+    return v;
+}
+
+void level_lines_of_face(const Mesh& mesh, const Face& t, const LevelValues& v, const LineExtractionOptions& o,
+                         ExtractedLines& lines) {
+    if (!v.isophote.empty()) {
+        const float step = 1.0f / float(o.isophote_count);
+        levels_of_face(mesh, t, v.isophote, 0.5f * step, step, o.isophote_count, lines[int(LineType::Isophote)]);
+    }
+    if (!v.height.empty())
+        levels_of_face(mesh, t, v.height, o.topo_first, o.topo_step, o.topo_count, lines[int(LineType::Topo)]);
+}
+
+void extract_level_lines(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& o,
+                         ExtractedLines& lines) {
+    if (!(o.isophotes || o.topo)) return;
+    const LevelValues v = level_values(mesh, fields, o);
+    for (const Face& t : mesh.faces) level_lines_of_face(mesh, t, v, o, lines);
 }
 
 }  // namespace kappa

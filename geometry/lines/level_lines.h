@@ -12,4 +12,14 @@ namespace kappa {
 void extract_level_lines(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& options,
                          ExtractedLines& lines);
 
+// The same in two steps, for passes that choose their triangles: the
+// per-vertex values once, then triangle by triangle.
+struct LevelValues {
+    std::vector<float> isophote;  // n.l (empty without isophotes)
+    std::vector<float> height;    // y (empty without topo)
+};
+LevelValues level_values(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& options);
+void level_lines_of_face(const Mesh& mesh, const Face& face, const LevelValues& values,
+                         const LineExtractionOptions& options, ExtractedLines& lines);
+
 }  // namespace kappa

@@ -54,15 +54,7 @@ ViewCurvature view_curvature(float k1, float k2, glm::vec4 C, glm::vec3 n, glm::
 
 namespace {
 
-struct VertexView {
-    float view_curv;   // sqrt(q1) fs
-    glm::vec3 t1;      // model coordinates
-    float dq1;
-    float kmax;
-    glm::vec3 dmax;
-    float v_dmax;
-    float ph_strength; // (kmax^2 - kmin^2) n.v fs^2
-};
+using VertexView = ViewRidgeVertex;
 
 // Where on edge (i, j) a quantity of opposite signs crosses zero, from the
 // corner with the smaller vertex number (so both triangles agree).
@@ -156,15 +148,13 @@ void principal_highlight(const Face& t, const glm::vec3 p[3], const VertexView* 
 
 }  // namespace
 
-void extract_view_ridges(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye, const ViewRidgeOptions& o,
-                         std::vector<LineSegment>& apparent, std::vector<LineSegment>& highlights) {
-    if (!o.apparent_ridges && !o.principal_highlights) return;
-    std::vector<VertexView> view(mesh.vertex_count());
-    const float fs = o.feature_size;
+std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye,
+                                                 float fs) {
+    std::vector<ViewRidgeVertex> view(mesh.vertex_count());
     parallel_for(view.size(), [&](size_t i) {
         const glm::vec3 to_eye = eye - mesh.positions[i];
         const ViewCurvature vc = view_curvature(f.k1[i], f.k2[i], f.dcurv[i], f.normals[i], f.d1[i], f.d2[i], to_eye);
-        VertexView& v = view[i];
+        ViewRidgeVertex& v = view[i];
         v.view_curv = std::sqrt(std::max(vc.q1, 0.0f)) * fs;
         v.t1 = vc.t1.x * f.d1[i] + vc.t1.y * f.d2[i];
         v.dq1 = vc.dq1;
@@ -177,13 +167,24 @@ void extract_view_ridges(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye
         v.v_dmax = glm::dot(dir, v.dmax);
         v.ph_strength = (v.kmax * v.kmax - kmin * kmin) * glm::dot(f.normals[i], dir) * fs * fs;
     });
-    for (const Face& t : mesh.faces) {
-        if (f.unreliable(t[0]) || f.unreliable(t[1]) || f.unreliable(t[2])) continue;
-        const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
-        const VertexView* vv[3] = {&view[t[0]], &view[t[1]], &view[t[2]]};
-        if (o.apparent_ridges) apparent_ridge(t, p, vv, o, apparent);
-        if (o.principal_highlights) principal_highlight(t, p, vv, o, highlights);
-    }
+    return view;
+}
+
+void view_ridges_of_face(const Mesh& mesh, const Face& t, const SurfaceFields& f,
+                         const std::vector<ViewRidgeVertex>& view, const ViewRidgeOptions& o,
+                         std::vector<LineSegment>& apparent, std::vector<LineSegment>& highlights) {
+    if (f.unreliable(t[0]) || f.unreliable(t[1]) || f.unreliable(t[2])) return;
+    const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
+    const VertexView* vv[3] = {&view[t[0]], &view[t[1]], &view[t[2]]};
+    if (o.apparent_ridges) apparent_ridge(t, p, vv, o, apparent);
+    if (o.principal_highlights) principal_highlight(t, p, vv, o, highlights);
+}
+
+void extract_view_ridges(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye, const ViewRidgeOptions& o,
+                         std::vector<LineSegment>& apparent, std::vector<LineSegment>& highlights) {
+    if (!o.apparent_ridges && !o.principal_highlights) return;
+    const std::vector<ViewRidgeVertex> view = view_ridge_vertices(mesh, f, eye, o.feature_size);
+    for (const Face& t : mesh.faces) view_ridges_of_face(mesh, t, f, view, o, apparent, highlights);
 }
 
 }  // namespace kappa

@@ -42,4 +42,21 @@ struct ViewRidgeOptions {
 void extract_view_ridges(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye, const ViewRidgeOptions& options,
                          std::vector<LineSegment>& apparent_ridges, std::vector<LineSegment>& principal_highlights);
 
+// The same in two steps, for passes that choose their triangles: per vertex
+// once (parallel), then triangle by triangle.
+struct ViewRidgeVertex {
+    float view_curv;    // sqrt(q1) fs
+    glm::vec3 t1;       // model coordinates
+    float dq1;
+    float kmax;         // the curvature of larger magnitude, signed
+    glm::vec3 dmax;     // its direction
+    float v_dmax;       // v.dmax
+    float ph_strength;  // (kmax^2 - kmin^2) n.v fs^2
+};
+std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye,
+                                                 float feature_size);
+void view_ridges_of_face(const Mesh& mesh, const Face& face, const SurfaceFields& fields,
+                         const std::vector<ViewRidgeVertex>& vertices, const ViewRidgeOptions& options,
+                         std::vector<LineSegment>& apparent_ridges, std::vector<LineSegment>& principal_highlights);
+
 }  // namespace kappa

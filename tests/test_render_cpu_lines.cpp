@@ -1,8 +1,8 @@
-// The contour pass with its lines made on the CPU (render/cpu_isolines.h,
-// the default on software GL) draws what the geometry-shader pass draws:
-// the same triangles are cut by the same tests and the segments drawn by the
-// same fragment shader, so the images differ only in a few pixels where
-// float rounding moves a crossing.
+// The line passes with their lines made on the CPU (render/cpu_lines.h, the
+// default on software GL) draw what the geometry-shader passes draw: the same
+// triangles are cut by the same tests and the segments drawn by the same
+// fragment shader, so the images differ only in a few pixels where float
+// rounding moves a crossing.
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
@@ -29,7 +29,7 @@ size_t differing_pixels(const render::Image& a, const render::Image& b) {
 
 }  // namespace
 
-TEST_CASE("CPU and geometry-shader extraction of contours draw the same image", "[render][cpu-isolines]") {
+TEST_CASE("CPU and geometry-shader extraction of lines draw the same image", "[render][cpu-lines]") {
     for (const std::string& name : {std::string(), std::string("bunny.ply")}) {
         const Mesh mesh = name.empty() ? make_default_model() : load_mesh(test::shared_mesh(name));
         const SurfaceFields fields = compute_surface_fields(mesh);
@@ -40,7 +40,14 @@ TEST_CASE("CPU and geometry-shader extraction of contours draw the same image", 
         silhouette.silhouette = true;
         render::LineSelection highlights{false, false, false, false};
         highlights.suggestive_highlights = highlights.dwkr = true;
-        for (const render::LineSelection& lines : {contours_suggestive, silhouette, highlights}) {
+        render::LineSelection curvature{false, false, false, false};
+        curvature.ridges = curvature.valleys = curvature.parabolic = curvature.mean_zero = true;
+        render::LineSelection view_ridges{false, false, false, false};
+        view_ridges.apparent_ridges = view_ridges.principal_highlights = true;
+        render::LineSelection levels{false, false, false, false};
+        levels.isophotes = levels.topo = true;
+        for (const render::LineSelection& lines :
+             {contours_suggestive, silhouette, highlights, curvature, view_ridges, levels}) {
             INFO((name.empty() ? "built-in" : name) << ", lines " << render::to_string(lines));
             render::RenderSettings s = test::lines_only(lines);
             s.line_extraction = render::LineExtraction::Gpu;
