@@ -15,7 +15,8 @@
 // warm-up, then N runs (default 1), median wall time and time per vertex.
 //
 // --kappa: also times kappa's estimate_jet on the same mesh, single-threaded,
-// alternating with CGAL's run in every round: its default plan (noise
+// alternating with CGAL's run in every round (ratios: of the medians, and
+// the median of each round's ratio, as ab-time.py): its default plan (noise
 // estimate, degree and rings from it, adjacency build, refits) and fixed
 // degree 4 on the 2-ring (CGAL's work). Its inputs (Max normals, areas) are
 // built once, untimed.
@@ -149,7 +150,11 @@ int main(int argc, char** argv) {
         for (double ms : t.ms) std::printf(" %.1f", ms);
         const double m = bench::median(t.ms);
         std::printf("  | median %.2f ms wall, %.3f us per vertex", m, 1000.0 * m / double(nv));
-        if (&t != &timed[0] && m > 0) std::printf(", CGAL / this %.1fx", cgal_ms / m);
+        if (&t != &timed[0] && m > 0) {
+            std::vector<double> ratios;  // per round, as ab-time.py
+            for (size_t r = 0; r < t.ms.size(); ++r) ratios.push_back(timed[0].ms[r] / t.ms[r]);
+            std::printf(", CGAL / this: %.1fx medians, %.1fx median per round", cgal_ms / m, bench::median(ratios));
+        }
         std::printf("\n");
     }
     size_t isolated = 0;
