@@ -8,11 +8,9 @@
 // size of the CGAL figure (1.2 s on one core). Default: every
 // estimator. The targets: jet on bunny-1M in at most 2 s on 2
 // threads, and 10x CGAL's time per vertex.
+#include "bench_mesh.h"
 #include "time_it.h"
 
-#include "tests/analytic_curvature.h"
-
-#include "geometry/io/mesh_io.h"
 #include "geometry/parallel.h"
 #include "geometry/surface_analysis.h"
 
@@ -33,7 +31,7 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--estimator") && i + 1 < argc) only = argv[++i];
         else path = argv[i];
     }
-    const Mesh mesh = path == "torus" ? test::analytic_torus(1, 0.4, 200, 100, 0.3, 101).mesh : load_mesh(path);
+    const Mesh mesh = bench::estimator_bench_mesh(path);
     std::printf("%s: %zu vertices, %zu faces, %d runs, %u threads\n", path.c_str(), mesh.vertex_count(),
                 mesh.face_count(), runs, thread_count());
     for (const std::string& name : estimator_names()) {
