@@ -1,5 +1,6 @@
 // `kappa batch` end to end: the real executable on small manifests of the
 // built-in model and generated meshes (128x96 images).
+#include "test_shapes.h"
 #include "test_support.h"
 
 #include "geometry/primitives.h"
@@ -7,7 +8,6 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <string>
 
@@ -15,19 +15,12 @@ using kappa::test::read_file;
 using kappa::test::run_command;
 using kappa::test::temp_dir;
 using kappa::test::write_file;
+using kappa::test::write_off;
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string kExe = KAPPA_EXE;
-
-void write_off(const std::string& path, const kappa::Mesh& m) {
-    std::ofstream f(path);
-    f.precision(9);
-    f << "OFF\n" << m.positions.size() << " " << m.faces.size() << " 0\n";
-    for (const auto& p : m.positions) f << p.x << " " << p.y << " " << p.z << "\n";
-    for (const auto& t : m.faces) f << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-}
 
 // dir/jobs.txt: three meshes (built-in, a torus, a sphere) x two views, a
 // curvature job, in an order that interleaves the meshes.
