@@ -119,7 +119,7 @@ reused by every later one (kappa.gl_context()).
         py::arg("V"), py::arg("F"), py::kw_only(), py::arg("camera") = py::none(),
         (std::string(R"(The visible lines of a view as polylines: what `kappa render -o out.svg` writes.
 
-Returns a list of dicts, hatching first, then line types in the SVG's layer order:
+Returns a list of dicts, the hatching strokes first, then the lines:
   type: the line type ('contours', 'suggestive', ..., 'hatching'),
   hidden: True for the dashed hidden parts (hidden_lines=True),
   points: (n, 2) float32 image pixels (x right, y down, (0, 0) the top-left corner),
