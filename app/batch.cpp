@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -73,7 +74,7 @@ std::string without_prefix(const std::string& message) {
     return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
 }
 
-// Parses a job's options with `declare`'s options; throws cli::UsageError.
+// Parses a job's options with those declared on p; throws cli::UsageError.
 void parse_options(const BatchJob& job, cli::Parser& p) {
     std::vector<std::string> words{"batch"};
     words.insert(words.end(), job.options.begin(), job.options.end());
