@@ -15,5 +15,6 @@ int run_view(int argc, char** argv);       // app/cmd_view.cpp
 int run_render(int argc, char** argv);     // app/cmd_render.cpp
 int run_curvature(int argc, char** argv);  // app/cmd_curvature.cpp
 int run_info(int argc, char** argv);       // app/cmd_info.cpp
+int run_batch(int argc, char** argv);      // app/cmd_batch.cpp
 
 }  // namespace kappa::app

@@ -34,6 +34,8 @@ const Command kCommands[] = {
     {"curvature", "estimate normals, curvature and its derivative per vertex; write CSV or PLY",
      kappa::app::run_curvature},
     {"info", "print mesh statistics: counts, bounds, edges, boundaries, components", kappa::app::run_info},
+    {"batch", "render and compute for many meshes and views from a manifest (--shard I/N, skips existing outputs)",
+     kappa::app::run_batch},
 };
 
 std::vector<std::string> command_names() {

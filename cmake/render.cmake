@@ -37,6 +37,8 @@ add_library(kappa_render STATIC ${KAPPA_RENDER_SOURCES} ${KAPPA_SHADER_CPP})
 target_include_directories(kappa_render PUBLIC ${CMAKE_SOURCE_DIR})
 target_link_libraries(kappa_render PUBLIC kappa_geometry kappa_glad OpenGL::OpenGL OpenGL::EGL
                       PRIVATE PNG::PNG stb)
+# Position-independent: the Python module (python/) links it into a shared object.
+set_target_properties(kappa_render PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # --- the viewer's window and UI: GLFW (X11) and Dear ImGui ----------------------
 # Debian's libimgui.a already contains the GLFW and OpenGL3 backends (platform.md).

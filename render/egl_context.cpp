@@ -129,6 +129,16 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create() {
                        (failures.empty() ? std::string("no device or surfaceless platform") : failures) + ")");
 }
 
+void HeadlessContext::make_current() {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+        throw ContextError("eglMakeCurrent failed: cannot use the OpenGL context on this thread");
+}
+
+void HeadlessContext::release() {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT))
+        throw ContextError("eglMakeCurrent failed: cannot release the OpenGL context");
+}
+
 HeadlessContext::~HeadlessContext() {
     if (display_) {
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);

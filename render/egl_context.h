@@ -28,6 +28,12 @@ public:
     // "EGL device platform: llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 ..."
     const std::string& description() const { return description_; }
 
+    // Makes the context current on the calling thread / releases it from the
+    // calling thread, so that another thread can make it current (one thread
+    // at a time: the Python module's callers). Throw ContextError on failure.
+    void make_current();
+    void release();
+
 private:
     HeadlessContext() = default;
     void* display_ = nullptr;  // EGLDisplay

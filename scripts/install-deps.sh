@@ -9,6 +9,7 @@ PACKAGES=(
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri
   xvfb xauth
   librsvg2-bin poppler-utils inkscape
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-dask
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -4,6 +4,8 @@
 #include "geometry/mesh.h"
 
 #include <cstdint>
+#include <fstream>
+#include <string>
 
 namespace kappa::test {
 
@@ -30,6 +32,15 @@ inline void append(Mesh& a, const Mesh& b) {
     const uint32_t base = uint32_t(a.positions.size());
     a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
     for (Face f : b.faces) a.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+}
+
+// Writes m as an OFF file (coordinates to 9 digits: float32 round-trips).
+inline void write_off(const std::string& path, const Mesh& m) {
+    std::ofstream f(path);
+    f.precision(9);
+    f << "OFF\n" << m.positions.size() << " " << m.faces.size() << " 0\n";
+    for (const auto& p : m.positions) f << p.x << " " << p.y << " " << p.z << "\n";
+    for (const auto& t : m.faces) f << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
 }
 
 }  // namespace kappa::test

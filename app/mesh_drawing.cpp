@@ -1,0 +1,107 @@
+#include "mesh_drawing.h"
+
+#include "render_options.h"
+
+#include "geometry/feature_size.h"
+#include "geometry/lines/line_extraction.h"
+#include "render/field_upload.h"
+#include "render/image_writer.h"
+#include "render/vector_view.h"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace kappa::app {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
+                         const ProgressFn& progress)
+    : settings_(settings), smoothing_(smoothing), progress_(progress) {
+    // Sharp edges split the mesh: each side gets its own normals and curvature.
+    crease_angle_ = render::resolved_crease_angle(settings.crease_angle, input);
+    const std::vector<glm::uvec2> creases = find_creases(input, crease_angle_);
+    drawn_ = split_at_creases(std::move(input), creases);
+    bounds_ = render::bounding_sphere(drawn_.mesh);
+    // With detail, the per-vertex curvature is needed only where a view
+    // blends in the raw estimate (zoomed in on a coarse mesh): computed then.
+    const bool detail = settings.detail > 0;
+    fields_ = detail && !smoothing.automatic ? compute_surface_normals(drawn_.mesh, &times_) : compute_fields();
+    const auto t_scale = std::chrono::steady_clock::now();
+    if (detail) detail_source_ = render::make_detail_source(drawn_.mesh, fields_);
+    else fs_ = feature_size(drawn_.mesh, fields_);  // with detail: per view
+    scale_s_ = seconds_since(t_scale);
+}
+
+SurfaceFields MeshDrawing::compute_fields() { return compute_surface_fields(drawn_.mesh, smoothing_, &times_, progress_); }
+
+float MeshDrawing::prepare_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size) {
+    const Mesh& mesh = drawn_.mesh;
+    if (uploaded_ && camera.view == prepared_view_ && camera.fov_y_deg == prepared_fov_ && size == prepared_size_)
+        return prepared_fs_;
+    prepared_view_ = camera.view, prepared_fov_ = camera.fov_y_deg, prepared_size_ = size;
+    if (settings_.detail <= 0) {
+        view_fields_ = &fields_;
+        if (!uploaded_) {
+            renderer.set_mesh(mesh, fields_, fs_);
+            renderer.set_creases(render::crease_end_points(drawn_));
+            uploaded_ = true;
+        }
+        return prepared_fs_ = fs_;
+    }
+    const render::ViewScales scales = render::view_scales(mesh, detail_source_, camera, size.y, settings_.detail);
+    if (!fields_.has_curvature() && render::needs_raw_curvature(detail_source_, scales)) fields_ = compute_fields();
+    view_ = render::detail_fields(mesh, detail_source_, fields_, scales);
+    view_fields_ = &view_.fields;
+    if (!uploaded_) {
+        renderer.set_mesh(mesh, view_.fields, view_.feature_size, view_.fine_normals);
+        renderer.set_creases(render::crease_end_points(drawn_));
+        uploaded_ = true;
+    } else {
+        renderer.update_fields(mesh, view_.fields, view_.feature_size, view_.fine_normals);
+    }
+    return prepared_fs_ = view_.feature_size;
+}
+
+bool MeshDrawing::same_preparation(const render::RenderSettings& s, const SmoothingOptions& o) const {
+    return s.crease_angle == settings_.crease_angle && s.detail == settings_.detail && same_smoothing(o, smoothing_);
+}
+
+render::Image MeshDrawing::image(render::Renderer& renderer, const render::Camera& camera,
+                                 const render::RenderSettings& settings, glm::ivec2 size) {
+    prepare_view(renderer, camera, size);
+    return render::render_to_image(renderer, camera, settings, size.x, size.y);
+}
+
+render::VectorDrawing MeshDrawing::vectors(render::Renderer& renderer, const render::Camera& camera,
+                                           const render::RenderSettings& settings, glm::ivec2 size,
+                                           render::Image& underlay) {
+    const float fs = prepare_view(renderer, camera, size);
+    if (!have_crease_edges_) {
+        crease_edges_ = kappa::crease_edges(drawn_.mesh, drawn_.creases, drawn_.crease_faces);
+        have_crease_edges_ = true;
+    }
+    const std::vector<glm::vec3>* fine = settings_.detail > 0 ? &view_.fine_normals : nullptr;
+    const render::StrokeSource source{&drawn_.mesh, view_fields_, fine, &crease_edges_, fs};
+    return render::draw_vector_view(renderer, camera, settings, size.x, size.y, source, underlay);
+}
+
+void MeshDrawing::write(render::Renderer& renderer, const render::Camera& camera,
+                        const render::RenderSettings& settings, glm::ivec2 size, const std::string& path) {
+    if (const auto format = render::vector_format_for(path)) {
+        render::Image underlay;
+        const render::VectorDrawing drawing = vectors(renderer, camera, settings, size, underlay);
+        if (*format == render::VectorFormat::Svg) render::write_svg(path, drawing);
+        else render::write_pdf(path, drawing);
+        return;
+    }
+    render::write_image(path, image(renderer, camera, settings, size));
+}
+
+}  // namespace kappa::app

@@ -1,0 +1,89 @@
+// One mesh prepared for drawing, and its views: what `kappa render`, each
+// mesh of `kappa batch` and the Python module's render() and strokes() share.
+// The mesh is split at its sharp edges (geometry/creases.h), its fields are
+// computed once (with --detail: the scale space, and per view the fields at
+// the view's scale, render/detail_fields.h), uploaded on the first view and
+// updated per view when they follow the view.
+#pragma once
+
+#include "geometry/creases.h"
+#include "geometry/surface_analysis.h"
+#include "render/camera.h"
+#include "render/detail_fields.h"
+#include "render/image.h"
+#include "render/render_settings.h"
+#include "render/renderer.h"
+#include "render/vector_drawing.h"
+
+#include <glm/vec2.hpp>
+
+#include <string>
+#include <vector>
+
+namespace kappa::app {
+
+class MeshDrawing {
+public:
+    // `settings` decides the crease angle and the detail (the fields of each
+    // view); progress reports the curvature computation. Views may be drawn
+    // with other appearance settings (lines, shading, ...), not other crease
+    // angle or detail: same_preparation tells.
+    MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
+                const ProgressFn& progress = {});
+
+    const Mesh& mesh() const { return drawn_.mesh; }
+    const render::BoundingSphere& bounds() const { return bounds_; }
+    size_t crease_count() const { return drawn_.creases.size(); }
+    float crease_angle() const { return crease_angle_; }
+    const StageTimes& times() const { return times_; }
+    double scale_seconds() const { return scale_s_; }  // feature size, or the scale space with detail
+    float noise_floor() const { return detail_source_.noise_floor; }
+
+    // Uploads the fields of this view to `renderer` (the whole mesh on the
+    // first view; nothing when this view was the last one prepared). The
+    // renderer must draw no other mesh between views. Returns the view's
+    // feature size.
+    float prepare_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size);
+
+    // The view as an RGBA image (prepare_view, then render_to_image).
+    render::Image image(render::Renderer& renderer, const render::Camera& camera,
+                        const render::RenderSettings& settings, glm::ivec2 size);
+    // The view as strokes (render/vector_view.h); the surface picture goes
+    // to underlay (the drawing points at it).
+    render::VectorDrawing vectors(render::Renderer& renderer, const render::Camera& camera,
+                                  const render::RenderSettings& settings, glm::ivec2 size, render::Image& underlay);
+    // Writes the view to `path`: .png/.jpg/.jpeg, .svg or .pdf.
+    // Throws std::runtime_error "PATH: reason".
+    void write(render::Renderer& renderer, const render::Camera& camera, const render::RenderSettings& settings,
+               glm::ivec2 size, const std::string& path);
+
+    // Whether a drawing made with these options would be prepared the same
+    // (crease angle, detail, curvature options), so this one can serve it.
+    bool same_preparation(const render::RenderSettings& settings, const SmoothingOptions& smoothing) const;
+
+private:
+    SurfaceFields compute_fields();
+
+    render::RenderSettings settings_;
+    SmoothingOptions smoothing_;
+    ProgressFn progress_;
+    float crease_angle_ = 0;
+    SplitMesh drawn_;
+    render::BoundingSphere bounds_;
+    StageTimes times_;
+    SurfaceFields fields_;
+    render::DetailSource detail_source_;
+    float fs_ = 0;  // without detail
+    double scale_s_ = 0;
+    std::vector<CreaseEdge> crease_edges_;  // for strokes, made on first use
+    bool have_crease_edges_ = false;
+    render::DetailFields view_;             // with detail: the last view's fields
+    const SurfaceFields* view_fields_ = nullptr;
+    bool uploaded_ = false;
+    // The view last prepared (with detail, the fields depend on it).
+    glm::mat4 prepared_view_{0};
+    float prepared_fov_ = 0, prepared_fs_ = 0;
+    glm::ivec2 prepared_size_{0};
+};
+
+}  // namespace kappa::app

@@ -1,0 +1,59 @@
+// The options of `kappa render` that say what to draw and from where: image
+// size, camera, every appearance setting (appearance_settings.h) and the
+// curvature options. Declared once here for `kappa render`, each line of
+// `kappa batch` manifests and the Python module's render() (which spells its
+// keyword arguments as these options).
+#pragma once
+
+#include "cli_options.h"
+
+#include "geometry/surface_fields.h"
+#include "geometry/view/default_view.h"
+#include "render/camera.h"
+#include "render/render_settings.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+
+namespace kappa::app {
+
+struct CameraOptions {
+    std::string xf_path;              // --xf
+    std::optional<ViewAngles> view;   // --view AZ,EL
+    glm::vec3 eye{0}, target{0}, up{0, 1, 0};
+    float fov = 30.0f;
+    bool has_eye = false, has_target = false, has_up = false, has_fov = false;  // given explicitly
+};
+
+struct RenderOptions {
+    glm::ivec2 size{1024, 768};
+    CameraOptions camera;
+    render::RenderSettings settings;
+    SmoothingOptions smoothing;
+};
+
+// Declares --size, --view, --eye, --target, --up, --fov, --xf, the appearance
+// settings and the curvature options (--estimator, --smooth*) on `p`.
+void add_render_options(cli::Parser& p, RenderOptions& options);
+
+// After p.parse: records which camera options were given and checks them
+// together (throws cli::UsageError "kappa CMD: problem"). Explicit smoothing
+// widths and estimators other than the default turn --detail off (README,
+// "kappa render").
+void finish_render_options(const cli::Parser& p, RenderOptions& options);
+
+// Whether two curvature settings ask for the same fields.
+bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b);
+
+// The camera the options describe for `mesh` (bounds: its bounding sphere)
+// in an image of `size`: --xf, --view, --eye/--target/--up or the default
+// view. orbit_center (optional): where a turntable turns around. Throws
+// cli::UsageError for a degenerate eye/target/up and std::runtime_error
+// for an unreadable --xf file.
+render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
+                           glm::ivec2 size, glm::vec3* orbit_center = nullptr);
+
+}  // namespace kappa::app
