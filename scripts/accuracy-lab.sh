@@ -10,11 +10,19 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
 OUT=${OUT:-docs/accuracy}
+PYTHON=${PYTHON:-/usr/bin/python3}
+# On a fresh machine: the build's packages, and matplotlib for the plots.
+scripts/install-deps.sh
+if ! "$PYTHON" -c "import matplotlib" 2>/dev/null; then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends python3-matplotlib
+fi
 if [ ! -f "$BUILD/build.ninja" ] && [ ! -f "$BUILD/Makefile" ]; then
   cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$BUILD" --target accuracy_lab
 mkdir -p "$OUT"
 "$BUILD/accuracy_lab" --out "$OUT/accuracy.csv" "$@"
-"${PYTHON:-/usr/bin/python3}" scripts/plot_accuracy.py "$OUT/accuracy.csv" "$OUT"
+"$PYTHON" scripts/plot_accuracy.py "$OUT/accuracy.csv" "$OUT"
 echo "wrote $OUT/fig8.png, $OUT/fig8.svg, $OUT/table.md"
