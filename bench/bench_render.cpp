@@ -67,11 +67,14 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
 
 int main(int argc, char** argv) {
     int width = 1024, height = 768, frames = 20;
-    bool each = false;
+    bool each = false, rtsc = false;
     float detail = 0;
+    std::string xf;
     std::vector<std::string> meshes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--each")) each = true;
+        else if (!std::strcmp(argv[i], "--rtsc")) rtsc = true;
+        else if (!std::strcmp(argv[i], "--xf") && i + 1 < argc) xf = argv[++i];
         else if (!std::strcmp(argv[i], "--detail") && i + 1 < argc) detail = float(std::atof(argv[++i]));
         else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
@@ -107,6 +110,13 @@ int main(int argc, char** argv) {
                                    {"  (contours+suggestive, geometry shader)", lines_gpu},
                                    {"  (contours+suggestive, CPU extraction)", lines_cpu},
                                    {"lambert+every line type", every}};
+    if (rtsc) {  // rtsc's frame (bench/frames_vs_rtsc.sh): a white unlit surface with contours and suggestive contours
+        render::RenderSettings white = lines;
+        white.shading = render::Shading::None;
+        render::RenderSettings white_gpu = white;
+        white_gpu.line_extraction = render::LineExtraction::Gpu;
+        configs = {{"white+contours+suggestive", white}, {"  (geometry shader)", white_gpu}};
+    }
     if (each)
         for (const render::LineKind& k : render::line_kinds()) {
             render::RenderSettings one = plain;
@@ -129,7 +139,11 @@ int main(int argc, char** argv) {
         }
         const SurfaceFields fields = compute_surface_fields(mesh);
         renderer.set_mesh(mesh, fields, feature_size(mesh, fields));
-        const auto camera = render::Camera::framing(renderer.mesh()->bounds(), 30.0f, float(width) / float(height));
+        render::Camera camera = render::Camera::framing(renderer.mesh()->bounds(), 30.0f, float(width) / float(height));
+        if (!xf.empty()) {  // a view saved by kappa view, with rtsc's field of view (as kappa render --xf)
+            camera.view = render::read_xf(xf);
+            camera.fov_y_deg = render::rtsc_fov_y_deg(width, height);
+        }
         if (detail > 0) {
             render::DetailSource source = render::make_detail_source(mesh, fields);
             const render::DetailFields d = render::detail_fields(mesh, source, fields, camera, height, detail);
@@ -150,8 +164,9 @@ int main(int argc, char** argv) {
                             t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0));
             }
             size_t every_row = 0;
-            while (std::string((*set)[every_row].name) != "lambert+every line type") ++every_row;
-            std::printf("  every line type / contours+suggestive: wall %.2fx, cpu %.2fx\n",
+            while (every_row < set->size() && std::string((*set)[every_row].name) != "lambert+every line type") ++every_row;
+            if (every_row < set->size())
+                std::printf("  every line type / contours+suggestive: wall %.2fx, cpu %.2fx\n",
                         times[every_row].wall_ms / times[1].wall_ms, times[every_row].cpu_ms / times[1].cpu_ms);
         }
     }
