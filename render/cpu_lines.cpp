@@ -146,8 +146,7 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
     for (const ExtractedLines& lines : found)
         for (int type = 0; type < kLineTypeCount; ++type)
             for (const LineSegment& seg : lines[size_t(type)]) {
-                const bool isoline = type == int(LineType::Contour) || type == int(LineType::Suggestive) ||
-                                     type == int(LineType::SuggestiveHighlight) || type == int(LineType::Dwkr);
+                const bool isoline = is_view_isoline(LineType(type));
                 const float kind = type == int(LineType::Contour) ? 2.0f : isoline ? 1.0f : 0.0f;
                 vertices.push_back({seg.a, seg.opacity_a, seg.tolerance, kind});
                 vertices.push_back({seg.b, seg.opacity_b, seg.tolerance, kind});

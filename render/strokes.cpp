@@ -168,8 +168,7 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
     run_options.line_width = settings.line_width;
     std::vector<Stroke> strokes;
     for (int type = 0; type < kLineTypeCount; ++type) {
-        const bool isoline = type == int(LineType::Contour) || type == int(LineType::Suggestive) ||
-                             type == int(LineType::SuggestiveHighlight) || type == int(LineType::Dwkr);
+        const bool isoline = is_view_isoline(LineType(type));
         run_options.scale_tolerance = isoline ? scale_tolerance : 0.0f;
         run_options.exterior_only = type == int(LineType::Contour) && lines.silhouette && !lines.contours;
         for (const Polyline& line : chain_segments(extracted[size_t(type)]))

@@ -44,6 +44,13 @@ constexpr int kLineTypeCount = 15;
 // "valleys", "parabolic", "mean-zero", "isophotes", "topo", "apparent-ridges",
 // "principal-highlights" (as in --lines), "hatching"
 const char* line_type_name(LineType type);
+// Zero sets of view-dependent fields (contours, suggestive contours and
+// highlights, Dw kr lines): with --detail they may lie the detail scale
+// behind the drawn polygons, so their occlusion tolerance grows with it.
+inline bool is_view_isoline(LineType t) {
+    return t == LineType::Contour || t == LineType::Suggestive || t == LineType::SuggestiveHighlight ||
+           t == LineType::Dwkr;
+}
 
 struct LineSegment {
     glm::vec3 a, b;                 // model coordinates
