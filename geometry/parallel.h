@@ -25,4 +25,9 @@ void parallel_for(size_t n, Body&& body, size_t min_chunk = 4096) {
         n, [&](size_t b, size_t e) { for (size_t i = b; i < e; ++i) body(i); }, min_chunk);
 }
 
+// Calls body(i) for every i in [0, n), handing out one index at a time to
+// whichever worker is free: for items of very unequal cost. Each item must
+// write only its own outputs (then results never depend on the thread count).
+void parallel_for_dynamic(size_t n, const std::function<void(size_t)>& body);
+
 }  // namespace kappa

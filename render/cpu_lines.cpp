@@ -1,5 +1,6 @@
 #include "render/cpu_lines.h"
 
+#include "geometry/lines/chain.h"
 #include "geometry/lines/curvature_lines.h"
 #include "geometry/lines/level_lines.h"
 #include "geometry/lines/line_extraction.h"
@@ -7,62 +8,130 @@
 #include "geometry/lines/view_ridges.h"
 #include "geometry/parallel.h"
 #include "render/cluster_culling.h"
+#include "render/screen_merge.h"
 
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cstddef>
-#include <functional>
+#include <utility>
 
 namespace kappa::render {
 
 namespace {
 
-struct SegmentVertex {
-    glm::vec3 position;
-    float alpha, tolerance, kind;  // kind: shaders/segments_vert.glsl
+// A corner of a segment's quad (shaders/segment_quads_vert.glsl).
+struct QuadVertex {
+    glm::vec3 end0, end1;
+    glm::vec2 alpha;
+    float tolerance;
+    float kind_corner;  // 4 kind + corner
 };
 
-// Calls per_face(face, lines) for every face of the runs, in parallel over
-// pieces of at most 4096 faces, and appends what they found to `out` in
-// face order (the same for any thread count).
-void extract_over(const std::vector<FaceRun>& runs, const std::function<void(uint32_t, ExtractedLines&)>& per_face,
-                  std::vector<ExtractedLines>& out) {
-    std::vector<FaceRun> pieces;
-    for (const FaceRun& r : runs)
-        for (uint32_t first = r.first; first < r.first + r.count; first += 4096)
-            pieces.push_back({first, std::min<uint32_t>(4096, r.first + r.count - first)});
-    const size_t base = out.size();
-    out.resize(base + pieces.size());
-    parallel_for(pieces.size(), [&](size_t i) {
-        for (uint32_t f = pieces[i].first; f < pieces[i].first + pieces[i].count; ++f) per_face(f, out[base + i]);
-    }, 1);
+// The four corners of each segment of `lines` (merged on screen,
+// render/screen_merge.h), appended to `out`.
+void append_quads(const ExtractedLines& lines, const ScreenMergeParams& merge, std::vector<QuadVertex>& out) {
+    std::vector<LineSegment> merged;
+    for (int type = 0; type < kLineTypeCount; ++type) {
+        // As isolines_geom.glsl: 2 occluding contours, 1 the other zero sets of view-dependent fields.
+        const int kind = type == int(LineType::Contour) ? 2 : is_view_isoline(LineType(type)) ? 1 : 0;
+        merged.clear();
+        for (const Polyline& line : chain_segments(lines[size_t(type)])) merge_on_screen(line, merge, merged);
+        for (const LineSegment& seg : merged) {
+            if (std::max(seg.opacity_a, seg.opacity_b) <= 0.0f) continue;
+            for (int corner = 0; corner < 4; ++corner)
+                out.push_back({seg.a, seg.b, {seg.opacity_a, seg.opacity_b}, seg.tolerance, float(4 * kind + corner)});
+        }
+    }
+}
+
+// The families of line types, each with its own choice of clusters.
+enum Family : uint8_t { kViewLines = 1, kCurvatureLines = 2, kViewRidges = 4, kIsophotes = 8, kTopo = 16 };
+
+// A run of faces and the families to extract on it.
+struct MaskedRun {
+    uint32_t first, count;
+    uint8_t families;
+};
+
+// Faces [block * kBlockFaces, (block + 1) * kBlockFaces) and the runs in it
+// that need extraction. Blocks are fixed, whatever the culling keeps, so
+// segments are chained and merged on screen (render/screen_merge.h) the
+// same way with culling as without: culled clusters hold no lines.
+constexpr uint32_t kBlockFaces = 2048;
+struct Block {
+    std::vector<MaskedRun> runs;
+};
+
+// The union of each family's runs (each sorted and disjoint), cut where the
+// set of families changes and at block boundaries, grouped by block.
+std::vector<Block> blocks_of(const std::vector<std::pair<uint8_t, std::vector<FaceRun>>>& families) {
+    std::vector<std::pair<uint32_t, int>> events;  // (face, +family bit on / -family bit off)
+    for (const auto& [bit, runs] : families)
+        for (const FaceRun& r : runs) {
+            events.push_back({r.first, int(bit)});
+            events.push_back({r.first + r.count, -int(bit)});
+        }
+    std::sort(events.begin(), events.end());
+    std::vector<Block> out;
+    uint32_t out_block = ~0u;
+    uint8_t mask = 0;
+    for (size_t i = 0; i < events.size();) {
+        const uint32_t at = events[i].first;
+        for (; i < events.size() && events[i].first == at; ++i)
+            mask = events[i].second > 0 ? uint8_t(mask | events[i].second) : uint8_t(mask & ~(-events[i].second));
+        const uint32_t next = i < events.size() ? events[i].first : at;
+        for (uint32_t first = at; mask && first < next;) {
+            const uint32_t block = first / kBlockFaces, end = std::min(next, (block + 1) * kBlockFaces);
+            if (block != out_block) out.emplace_back(), out_block = block;
+            out.back().runs.push_back({first, end - first, mask});
+            first = end;
+        }
+    }
+    return out;
 }
 
 }  // namespace
 
 CpuLinePass::CpuLinePass()
-    : program_({{GL_VERTEX_SHADER, {"segments_vert.glsl"}},
-                {GL_GEOMETRY_SHADER, {"line_quad.glsl", "segments_geom.glsl"}},
-                {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {
+    : program_({{GL_VERTEX_SHADER, {"segment_quads_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"lines_frag.glsl"}}}) {
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &buffer_);
+    glGenBuffers(1, &index_buffer_);
     glBindVertexArray(vao_);
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-    const GLsizei stride = sizeof(SegmentVertex);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(0));
-    for (GLuint i = 1; i <= 3; ++i) {
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
+    const GLsizei stride = sizeof(QuadVertex);
+    const struct {
+        GLint components;
+        size_t offset;
+    } attributes[] = {{3, offsetof(QuadVertex, end0)}, {3, offsetof(QuadVertex, end1)}, {2, offsetof(QuadVertex, alpha)},
+                      {1, offsetof(QuadVertex, tolerance)}, {1, offsetof(QuadVertex, kind_corner)}};
+    for (GLuint i = 0; i < 5; ++i) {
         glEnableVertexAttribArray(i);
-        glVertexAttribPointer(i, 1, GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(offsetof(SegmentVertex, alpha) + (i - 1) * sizeof(float)));
+        glVertexAttribPointer(i, attributes[i].components, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(attributes[i].offset));
     }
     glBindVertexArray(0);
 }
 
 CpuLinePass::~CpuLinePass() {
+    glDeleteBuffers(1, &index_buffer_);
     glDeleteBuffers(1, &buffer_);
     glDeleteVertexArrays(1, &vao_);
+}
+
+void CpuLinePass::ensure_indices(size_t quads) {
+    if (quads <= index_quads_) return;
+    index_quads_ = std::max(quads, 2 * index_quads_);
+    std::vector<uint32_t> indices(6 * index_quads_);
+    for (size_t q = 0; q < index_quads_; ++q) {
+        const uint32_t v = uint32_t(4 * q);
+        const uint32_t quad[6] = {v, v + 1, v + 2, v + 2, v + 1, v + 3};
+        std::copy(quad, quad + 6, indices.begin() + std::ptrdiff_t(6 * q));
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(), GL_STATIC_DRAW);
 }
 
 void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
@@ -79,79 +148,87 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
     o.isophotes = l.isophotes && s.isophote_count > 0, o.topo = l.topo && s.topo_count > 0;
     o.sc_threshold = s.sc_threshold, o.sh_threshold = s.sh_threshold, o.rv_threshold = s.rv_threshold;
     o.feature_size = fs, o.fade = s.fade;
-    std::vector<ExtractedLines> found;
 
-    // Contours, suggestive contours and highlights, Dw kr lines (the GPU contour pass's culling and tests).
+    // Per vertex, once: what each family's per-face tests read.
+    const bool view_lines = o.contours || o.suggestive || o.suggestive_highlights || o.dwkr;
     const bool highlights = l.suggestive_highlights;
-    if (o.contours || o.suggestive || highlights || o.dwkr) {
-        const ViewQuantities q = compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs);
-        extract_over(runs_or_all([&] {
-                         return contour_pass_runs(mesh.clusters(), frame, o.contours, o.suggestive || highlights,
-                                                  highlights ? -1e30f : s.sc_threshold, margin, o.dwkr);
-                     }),
-                     [&](uint32_t f, ExtractedLines& out) { extract_view_lines_of_face(m, m.faces[f], fields, q, o, out); },
-                     found);
-    }
-    if (l.curvature_lines())
-        extract_over(runs_or_all([&] {
-                         return curvature_line_runs(mesh.clusters(), frame, s.hidden_lines, margin, l, s.rv_threshold);
-                     }),
-                     [&](uint32_t f, ExtractedLines& out) { curvature_lines_of_face(m, m.faces[f], fields, o, out); },
-                     found);
-    if (l.view_ridges()) {
-        ViewRidgeOptions vr;
-        vr.apparent_ridges = l.apparent_ridges, vr.principal_highlights = l.principal_highlights;
-        vr.ar_threshold = s.ar_threshold, vr.ph_threshold = s.ph_threshold, vr.feature_size = fs, vr.fade = s.fade;
-        const std::vector<ViewRidgeVertex> vertices = view_ridge_vertices(m, fields, frame.eye, fs);
-        extract_over(runs_or_all([&] {
-                         return view_ridge_runs(mesh.clusters(), frame, s.hidden_lines, margin, l, s.ph_threshold);
-                     }),
-                     [&](uint32_t f, ExtractedLines& out) {
-                         view_ridges_of_face(m, m.faces[f], fields, vertices, vr, out[int(LineType::ApparentRidge)],
-                                             out[int(LineType::PrincipalHighlight)]);
-                     },
-                     found);
-    }
-    // Isophotes (the light as the shading's, in model coordinates) and topographic lines.
-    if (o.isophotes) {
-        LineExtractionOptions iso = o;
-        iso.topo = false;
-        iso.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
-        iso.isophote_count = s.isophote_count;
-        const LevelValues values = level_values(m, fields, iso);
-        const float step = 1.0f / float(s.isophote_count);
-        extract_over(runs_or_all([&] {
-                         return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, iso.light,
-                                              {0.5f * step, step, s.isophote_count});
-                     }),
-                     [&](uint32_t f, ExtractedLines& out) { level_lines_of_face(m, m.faces[f], values, iso, out); },
-                     found);
-    }
-    if (o.topo) {
-        LineExtractionOptions topo = o;
-        topo.isophotes = false;
-        topo.topo_count = s.topo_count;
-        topo.topo_step = 2.0f * mesh.bounds().radius / float(s.topo_count);
-        topo.topo_first = mesh.bounds().center.y - mesh.bounds().radius + 0.5f * topo.topo_step;
-        const LevelValues values = level_values(m, fields, topo);
-        extract_over(runs_or_all([&] {
-                         return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin,
-                                          {topo.topo_first, topo.topo_step, topo.topo_count});
-                     }),
-                     [&](uint32_t f, ExtractedLines& out) { level_lines_of_face(m, m.faces[f], values, topo, out); },
-                     found);
-    }
+    const ViewQuantities q = view_lines ? compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs)
+                                        : ViewQuantities{};
+    ViewRidgeOptions vr;
+    vr.apparent_ridges = l.apparent_ridges, vr.principal_highlights = l.principal_highlights;
+    vr.ar_threshold = s.ar_threshold, vr.ph_threshold = s.ph_threshold, vr.feature_size = fs, vr.fade = s.fade;
+    const std::vector<ViewRidgeVertex> ridge_vertices =
+        l.view_ridges() ? view_ridge_vertices(m, fields, frame.eye, fs) : std::vector<ViewRidgeVertex>{};
+    // Level lines: isophotes with the shading's light (model coordinates), topographic lines along y.
+    LineExtractionOptions iso = o, topo = o;
+    iso.topo = false, topo.isophotes = false;
+    iso.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
+    iso.isophote_count = s.isophote_count;
+    topo.topo_count = s.topo_count;
+    topo.topo_step = 2.0f * mesh.bounds().radius / float(std::max(1, s.topo_count));
+    topo.topo_first = mesh.bounds().center.y - mesh.bounds().radius + 0.5f * topo.topo_step;
+    LineExtractionOptions levels = o;
+    levels.light = iso.light, levels.isophote_count = s.isophote_count, levels.topo_count = s.topo_count;
+    const LevelValues level = o.isophotes || o.topo ? level_values(m, fields, levels) : LevelValues{};
 
-    std::vector<SegmentVertex> vertices;
-    for (const ExtractedLines& lines : found)
-        for (int type = 0; type < kLineTypeCount; ++type)
-            for (const LineSegment& seg : lines[size_t(type)]) {
-                const bool isoline = is_view_isoline(LineType(type));
-                const float kind = type == int(LineType::Contour) ? 2.0f : isoline ? 1.0f : 0.0f;
-                vertices.push_back({seg.a, seg.opacity_a, seg.tolerance, kind});
-                vertices.push_back({seg.b, seg.opacity_b, seg.tolerance, kind});
+    // Per family, the clusters that can hold its lines in this view (render/cluster_culling.h).
+    std::vector<std::pair<uint8_t, std::vector<FaceRun>>> families;
+    if (view_lines)
+        families.push_back({kViewLines, runs_or_all([&] {
+                                return contour_pass_runs(mesh.clusters(), frame, o.contours, o.suggestive || highlights,
+                                                         highlights ? -1e30f : s.sc_threshold, margin, o.dwkr);
+                            })});
+    if (l.curvature_lines())
+        families.push_back({kCurvatureLines, runs_or_all([&] {
+                                return curvature_line_runs(mesh.clusters(), frame, s.hidden_lines, margin, l,
+                                                           s.rv_threshold);
+                            })});
+    if (l.view_ridges())
+        families.push_back({kViewRidges, runs_or_all([&] {
+                                return view_ridge_runs(mesh.clusters(), frame, s.hidden_lines, margin, l,
+                                                       s.ph_threshold);
+                            })});
+    const float iso_step = 1.0f / float(std::max(1, s.isophote_count));
+    if (o.isophotes)
+        families.push_back({kIsophotes, runs_or_all([&] {
+                                return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, iso.light,
+                                                     {0.5f * iso_step, iso_step, s.isophote_count});
+                            })});
+    if (o.topo)
+        families.push_back({kTopo, runs_or_all([&] {
+                                return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin,
+                                                 {topo.topo_first, topo.topo_step, topo.topo_count});
+                            })});
+
+    // One pass over the faces for every family, block by block, the blocks
+    // taken by the workers as they come free; each block writes its own
+    // vertices, joined in block order (the same buffer for any thread count).
+    const std::vector<Block> pieces = blocks_of(families);
+    ScreenMergeParams merge;
+    merge.mvp = frame.mvp, merge.viewport = frame.viewport;
+    merge.depth_params = glm::vec2(frame.projection[2][2], frame.projection[3][2]);
+    std::vector<std::vector<QuadVertex>> piece_vertices(pieces.size());
+    parallel_for_dynamic(pieces.size(), [&](size_t i) {
+        ExtractedLines found;
+        for (const MaskedRun& r : pieces[i].runs) {
+            for (uint32_t f = r.first; f < r.first + r.count; ++f) {
+                const Face& face = m.faces[f];
+                if (r.families & kViewLines) extract_view_lines_of_face(m, face, fields, q, o, found);
+                if (r.families & kCurvatureLines) curvature_lines_of_face(m, face, fields, o, found);
+                if (r.families & kViewRidges)
+                    view_ridges_of_face(m, face, fields, ridge_vertices, vr, found[int(LineType::ApparentRidge)],
+                                        found[int(LineType::PrincipalHighlight)]);
+                if (r.families & kIsophotes) level_lines_of_face(m, face, level, iso, found);
+                if (r.families & kTopo) level_lines_of_face(m, face, level, topo, found);
             }
-    if (vertices.empty()) return;
+        }
+        append_quads(found, merge, piece_vertices[i]);
+    });
+    size_t total = 0;
+    for (const auto& v : piece_vertices) total += v.size();
+    if (total == 0) return;
+    glBindVertexArray(vao_);
+    ensure_indices(total / 4);
     program_.use();
     program_.set("u_mvp", frame.mvp);
     program_.set("u_viewport", frame.viewport);
@@ -161,10 +238,15 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
     program_.set("u_hidden_lines", int(s.hidden_lines));
     program_.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
     program_.set("u_silhouette_only", int(l.silhouette && !l.contours));
-    glBindVertexArray(vao_);
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(SegmentVertex)), vertices.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_LINES, 0, GLsizei(vertices.size()));
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(total * sizeof(QuadVertex)), nullptr, GL_STREAM_DRAW);
+    GLintptr offset = 0;
+    for (const auto& v : piece_vertices) {
+        if (v.empty()) continue;
+        glBufferSubData(GL_ARRAY_BUFFER, offset, GLsizeiptr(v.size() * sizeof(QuadVertex)), v.data());
+        offset += GLintptr(v.size() * sizeof(QuadVertex));
+    }
+    glDrawElements(GL_TRIANGLES, GLsizei(total / 4 * 6), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }
 

@@ -4,8 +4,9 @@
 // highlights, isophotes and topographic lines, per frame, from the
 // triangles of the clusters that can hold each kind
 // (render/cluster_culling.h), on all worker threads. Only the segments go
-// through the GL (shaders/segments_*.glsl), drawn and occlusion-tested as
-// the geometry-shader passes draw theirs. On software renderers (llvmpipe)
+// through the GL, each as a quad of two triangles
+// (shaders/segment_quads_vert.glsl, with no geometry shader), drawn and
+// occlusion-tested as the geometry-shader passes draw theirs. On software renderers (llvmpipe)
 // this is much faster than a geometry shader on every triangle, and draws
 // the same lines (tests/test_render_cpu_lines.cpp). Creases, boundaries and
 // glyphs keep their own (cheap) passes.
@@ -28,8 +29,11 @@ public:
     void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
 
 private:
+    void ensure_indices(size_t quads);  // the index buffer holds two triangles for at least `quads` quads
+
     ShaderProgram program_;
-    unsigned vao_ = 0, buffer_ = 0;
+    unsigned vao_ = 0, buffer_ = 0, index_buffer_ = 0;
+    size_t index_quads_ = 0;
 };
 
 }  // namespace kappa::render

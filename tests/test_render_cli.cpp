@@ -169,9 +169,9 @@ TEST_CASE("kappa render --view and --eye without --target frame the model from t
     REQUIRE(test::run_command(kappa_render("--eye 1000,0,0" + common + "/far.png")).exit_code == 0);
     const render::Image view = render::read_png(dir + "/view.png"), near = render::read_png(dir + "/near.png"),
                         far = render::read_png(dir + "/far.png");
-    const bool same_near = view.pixels == near.pixels, same_far = view.pixels == far.pixels;
-    CHECK(same_near);
-    CHECK(same_far);
+    // The same picture, up to where lines merged on screen (test_render_fixtures.h).
+    CHECK(test::largest_difference(view, near) <= test::kScreenMergeTolerance);
+    CHECK(test::largest_difference(view, far) <= test::kScreenMergeTolerance);
     CHECK(test::count_ink(view) > 100);
     // With --target the distance is the user's: from 1000 units away the model is a dot.
     REQUIRE(test::run_command(kappa_render("--eye 1000,0,0 --target 0,0,0" + common + "/dot.png")).exit_code == 0);

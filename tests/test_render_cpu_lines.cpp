@@ -1,8 +1,11 @@
 // The line passes with their lines made on the CPU (render/cpu_lines.h, the
 // default on software GL) draw what the geometry-shader passes draw: the same
 // triangles are cut by the same tests and the segments drawn by the same
-// fragment shader, so the images differ only in a few pixels where float
-// rounding moves a crossing.
+// fragment shader. The CPU path merges consecutive segments on screen
+// (render/screen_merge.h) within 0.2 px and 1/64 opacity; the box-filtered
+// coverage moves by at most the distance the centre line moves, so a pixel
+// changes by at most 0.2 + 1/64 < 0.25 of full ink, except in the few
+// pixels where float rounding moves a crossing or a visibility test flips.
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
@@ -14,16 +17,18 @@
 #include "geometry/surface_analysis.h"
 #include "render/ink_agreement.h"
 
+#include <cstdlib>
 #include <string>
 
 using namespace kappa;
 
 namespace {
 
+// Pixels whose colour differs by more than a quarter of full ink in a channel.
 size_t differing_pixels(const render::Image& a, const render::Image& b) {
     size_t n = 0;
-    for (size_t i = 0; i < a.pixels.size(); i += 4)
-        n += a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2];
+    auto far = [&](size_t i) { return std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 64; };
+    for (size_t i = 0; i < a.pixels.size(); i += 4) n += far(i) || far(i + 1) || far(i + 2);
     return n;
 }
 

@@ -1,5 +1,10 @@
 // Cluster culling of the contour pass (render/cluster_culling.h) skips work,
-// never lines: the image is the same pixel for pixel with and without it.
+// never lines: the image is the same with and without it. On software GL the
+// lines are made on the CPU and merged on screen (render/screen_merge.h),
+// where a polyline cut at a culled cluster outside the view may merge its
+// first segments inside the view from another point: those pixels move by
+// at most the merge error (test::kScreenMergeTolerance), while a line lost
+// to culling would change its pixels by its full ink.
 // The other line passes skip the clusters outside the view and the entirely
 // back-facing ones: the same lines but for a few pixels near contours.
 #include <catch2/catch.hpp>
@@ -58,7 +63,7 @@ void check_same_with_and_without_culling(const Mesh& mesh, const std::string& na
             INFO(name << ", eye " << v.eye.x << "," << v.eye.y << "," << v.eye.z << ", lines "
                       << render::to_string(lines));
             CHECK(test::count_ink(all) > 100);
-            CHECK(culled.pixels == all.pixels);
+            CHECK(test::largest_difference(culled, all) <= test::kScreenMergeTolerance);
         }
     }
 }

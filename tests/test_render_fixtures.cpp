@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "test_render_fixtures.h"
 
 #include "render/egl_context.h"
@@ -102,6 +103,13 @@ render::Image render(const Mesh& mesh, const SurfaceFields& fields, float fs, co
 bool is_ink(const render::Rgba& c) { return render::is_ink(c); }
 
 size_t count_ink(const render::Image& image) { return render::count_ink(image); }
+
+int largest_difference(const render::Image& a, const render::Image& b) {
+    int largest = a.pixels.size() == b.pixels.size() ? 0 : 255;
+    for (size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i)
+        largest = std::max(largest, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
+    return largest;
+}
 
 glm::vec2 project(const render::Camera& camera, const render::BoundingSphere& bounds, glm::vec3 point, int width,
                   int height) {

@@ -33,6 +33,15 @@ render::RenderSettings lines_only(render::LineSelection lines);
 render::Image render(const Mesh& mesh, const SurfaceFields& fields, float fs, const render::Camera& camera,
                      const render::RenderSettings& settings, int width = 256, int height = 256);
 
+// The largest difference of any channel of two images of one size (0..255).
+int largest_difference(const render::Image& a, const render::Image& b);
+// What merging line segments on screen (render/screen_merge.h: within 0.2 px
+// and 1/64 opacity) may change in a pixel of a line drawing on software GL:
+// box-filtered coverage moves by at most the distance its centre line
+// moves, so 0.2 + 1/64 of full ink, 55 of 255. A line drawn or lost changes
+// its pixels by its full ink.
+constexpr int kScreenMergeTolerance = 55;
+
 // A pixel is "ink" when its darkest channel is below 128 (on white paper).
 bool is_ink(const render::Rgba& c);
 size_t count_ink(const render::Image& image);

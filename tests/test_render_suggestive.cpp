@@ -135,10 +135,11 @@ TEST_CASE("raising the suggestive-contour threshold never adds line pixels", "[r
             if (!previous.pixels.empty()) {
                 INFO("shape " << shape << ", fade " << fade << ", threshold " << s);
                 CHECK(ink <= previous_ink);
-                // Pixel by pixel: no pixel gets darker.
+                // Pixel by pixel: no pixel gets darker (beyond what merging segments on screen
+                // may change, test_render_fixtures.h).
                 size_t darker = 0;
                 for (size_t i = 0; i < image.pixels.size(); i += 4)
-                    darker += image.pixels[i] + 1 < previous.pixels[i];
+                    darker += image.pixels[i] + test::kScreenMergeTolerance < previous.pixels[i];
                 CHECK(darker == 0);
             }
             previous = image;

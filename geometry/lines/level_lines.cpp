@@ -44,11 +44,11 @@ LevelValues level_values(const Mesh& mesh, const SurfaceFields& fields, const Li
 
 void level_lines_of_face(const Mesh& mesh, const Face& t, const LevelValues& v, const LineExtractionOptions& o,
                          ExtractedLines& lines) {
-    if (!v.isophote.empty()) {
+    if (o.isophotes && !v.isophote.empty()) {
         const float step = 1.0f / float(o.isophote_count);
         levels_of_face(mesh, t, v.isophote, 0.5f * step, step, o.isophote_count, lines[int(LineType::Isophote)]);
     }
-    if (!v.height.empty())
+    if (o.topo && !v.height.empty())
         levels_of_face(mesh, t, v.height, o.topo_first, o.topo_step, o.topo_count, lines[int(LineType::Topo)]);
 }
 
