@@ -83,18 +83,24 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
     return out;
 }
 
-void principal_curvatures(const VertexTensors& tensors, const std::vector<glm::vec3>& normals, std::vector<float>& k1, std::vector<float>& k2,
-                          std::vector<glm::vec3>& d1, std::vector<glm::vec3>& d2) {
+void principal_curvatures(const VertexTensors& tensors, const std::vector<glm::vec3>& normals, std::vector<float>& k1,
+                          std::vector<float>& k2, std::vector<glm::vec3>& d1) {
     const size_t nv = tensors.tensor.size();
     k1.resize(nv);
     k2.resize(nv);
     d1.resize(nv);
-    d2.resize(nv);
     parallel_for(nv, [&](size_t i) {
-        glm::vec3 u, v;
+        glm::vec3 u, v, d2;
         tangent_frame(normals[i], u, v);
-        diagonalize_tensor(u, v, normals[i], tensors.tensor[i], d1[i], d2[i], k1[i], k2[i]);
+        diagonalize_tensor(u, v, normals[i], tensors.tensor[i], d1[i], d2, k1[i], k2[i]);
     });
+}
+
+std::vector<glm::vec3> second_principal_directions(const std::vector<glm::vec3>& normals,
+                                                   const std::vector<glm::vec3>& d1) {
+    std::vector<glm::vec3> d2(d1.size());
+    parallel_for(d1.size(), [&](size_t i) { d2[i] = glm::cross(normals[i], d1[i]); });
+    return d2;
 }
 
 }  // namespace kappa

@@ -45,8 +45,14 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
                                         const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
                                         FaceFits& fits);
 
-// Diagonalisation: k1 >= k2, d1 x d2 = n.
-void principal_curvatures(const VertexTensors& tensors, const std::vector<glm::vec3>& normals, std::vector<float>& k1, std::vector<float>& k2,
-                          std::vector<glm::vec3>& d1, std::vector<glm::vec3>& d2);
+// Diagonalisation: k1 >= k2 and the first principal direction d1.
+void principal_curvatures(const VertexTensors& tensors, const std::vector<glm::vec3>& normals, std::vector<float>& k1,
+                          std::vector<float>& k2, std::vector<glm::vec3>& d1);
+
+// The second principal direction d2 = n x d1 (so d1 x d2 = n), as
+// diagonalize_tensor gives it. Separate so that it can be allocated after the
+// big temporaries of the derivative step are gone.
+std::vector<glm::vec3> second_principal_directions(const std::vector<glm::vec3>& normals,
+                                                   const std::vector<glm::vec3>& d1);
 
 }  // namespace kappa

@@ -49,14 +49,15 @@ inline FrameChange vertex_in_face(const FaceFits& fits, size_t f, const glm::vec
 
 }  // namespace
 
-std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, const FaceFits& fits,
+std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceFits fits,
                                      const std::vector<glm::vec3>& corner_areas, const std::vector<glm::vec3>& normals,
-                                     const VertexTensors& tensors, const std::vector<glm::vec3>& d1) {
+                                     VertexTensors tensors, const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
+    std::vector<Tensor2>().swap(fits.tensor);
     std::vector<glm::vec4> face_dcurv(nf);
-    std::vector<uint8_t> face_ok(nf, 0);
+    std::vector<uint8_t>& face_ok = fits.ok;  // cleared where the C fit fails too
     parallel_for(nf, [&](size_t i) {
-        if (!fits.ok[i]) return;
+        if (!face_ok[i]) return;
         const Face& f = mesh.faces[i];
         const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
         const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};
@@ -69,6 +70,7 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, co
         }
         face_ok[i] = fit_face_dcurv(e, fcurv, fits.t[i], fits.b[i], face_dcurv[i]);
     });
+    std::vector<Tensor2>().swap(tensors.tensor);
 
     std::vector<glm::vec4> dcurv(nv, glm::vec4(0.0f));
     parallel_for(nv, [&](size_t vi) {

@@ -59,7 +59,7 @@ void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces
     }
     {
         StageTimer timer(&t.curvature);
-        principal_curvatures(e.tensors, out.normals, out.k1, out.k2, out.d1, out.d2);
+        principal_curvatures(e.tensors, out.normals, out.k1, out.k2, out.d1);
     }
     report(0.65f, "derivative of curvature");
     {
@@ -69,7 +69,8 @@ void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces
             // needs the face frames of the paper's curvature step.
             FaceFits fits;
             compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
-            out.dcurv = compute_dcurv(mesh, vf, fits, faces.corner_areas, out.normals, e.tensors, out.d1);
+            out.dcurv = compute_dcurv(mesh, vf, std::move(fits), faces.corner_areas, out.normals, std::move(e.tensors),
+                                      out.d1);
         } else {
             out.dcurv.resize(out.normals.size());
             parallel_for(out.normals.size(), [&](size_t v) {
@@ -80,6 +81,7 @@ void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces
                 out.dcurv[v] = transform_dcurv(FrameChange{c, -s, s, c}, e.dcurv_uv[v]);
             });
         }
+        out.d2 = second_principal_directions(out.normals, out.d1);
     }
     if (smoothing.dcurv > 0) {
         report(0.8f, "smoothing derivative");
@@ -164,14 +166,15 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
     }
     {
         StageTimer timer(&t.curvature);
-        principal_curvatures(tensors, out.normals, out.k1, out.k2, out.d1, out.d2);
+        principal_curvatures(tensors, out.normals, out.k1, out.k2, out.d1);
     }
 
     report(0.65f, "derivative of curvature");
     {
         StageTimer timer(&t.dcurv);
-        std::vector<Tensor2>().swap(fits.tensor);  // not needed any more
-        out.dcurv = compute_dcurv(mesh, vf, fits, faces.corner_areas, out.normals, tensors, out.d1);
+        out.dcurv = compute_dcurv(mesh, vf, std::move(fits), faces.corner_areas, out.normals, std::move(tensors), out.d1);
+        std::vector<glm::vec3>().swap(faces.corner_areas);  // the last per-face array: free before d2 is allocated
+        out.d2 = second_principal_directions(out.normals, out.d1);
     }
     if (smoothing.dcurv > 0) {
         report(0.8f, "smoothing derivative");

@@ -1,15 +1,19 @@
 #include "file_bytes.h"
 
 #include "io_errors.h"
-#include "prefault.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <cerrno>
 #include <cstring>
 
 namespace kappa::io {
+
+void Unmap::operator()(char* p) const {
+    if (p) ::munmap(p, size);
+}
 
 namespace {
 // Closes the descriptor on every path out of read_file_bytes.
@@ -36,22 +40,9 @@ FileBytes read_file_bytes(const std::string& path) {
 
     FileBytes bytes;
     bytes.size = static_cast<size_t>(st.st_size);
-    try {
-        bytes.data.reset(new char[bytes.size]);  // uninitialised: filled by read()
-    } catch (const std::bad_alloc&) {
-        fail_load(path, "file too large to read into memory");
-    }
-    prefault(bytes.data.get(), bytes.size);
-    size_t done = 0;
-    while (done < bytes.size) {
-        ssize_t n = ::read(file.fd, bytes.data.get() + done, bytes.size - done);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            fail_load(path, std::string("read error: ") + std::strerror(errno));
-        }
-        if (n == 0) fail_load(path, "file shrank while being read");
-        done += static_cast<size_t>(n);
-    }
+    void* p = ::mmap(nullptr, bytes.size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.fd, 0);
+    if (p == MAP_FAILED) fail_load(path, std::string("cannot read: ") + std::strerror(errno));
+    bytes.data = std::unique_ptr<char, Unmap>(static_cast<char*>(p), Unmap{bytes.size});
     return bytes;
 }
 
