@@ -8,6 +8,7 @@
 #include "geometry/lines/view_ridges.h"
 #include "geometry/parallel.h"
 #include "render/cluster_culling.h"
+#include "render/line_prefilter.h"
 #include "render/screen_merge.h"
 
 #include <glm/matrix.hpp>
@@ -44,9 +45,6 @@ void append_quads(const ExtractedLines& lines, const ScreenMergeParams& merge, s
         }
     }
 }
-
-// The families of line types, each with its own choice of clusters.
-enum Family : uint8_t { kViewLines = 1, kCurvatureLines = 2, kViewRidges = 4, kIsophotes = 8, kTopo = 16 };
 
 // A run of faces and the families to extract on it.
 struct MaskedRun {
@@ -149,27 +147,20 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
     o.sc_threshold = s.sc_threshold, o.sh_threshold = s.sh_threshold, o.rv_threshold = s.rv_threshold;
     o.feature_size = fs, o.fade = s.fade;
 
-    // Per vertex, once: what each family's per-face tests read.
     const bool view_lines = o.contours || o.suggestive || o.suggestive_highlights || o.dwkr;
     const bool highlights = l.suggestive_highlights;
-    const ViewQuantities q = view_lines ? compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs)
-                                        : ViewQuantities{};
     ViewRidgeOptions vr;
     vr.apparent_ridges = l.apparent_ridges, vr.principal_highlights = l.principal_highlights;
     vr.ar_threshold = s.ar_threshold, vr.ph_threshold = s.ph_threshold, vr.feature_size = fs, vr.fade = s.fade;
-    const std::vector<ViewRidgeVertex> ridge_vertices =
-        l.view_ridges() ? view_ridge_vertices(m, fields, frame.eye, fs) : std::vector<ViewRidgeVertex>{};
     // Level lines: isophotes with the shading's light (model coordinates), topographic lines along y.
-    LineExtractionOptions iso = o, topo = o;
-    iso.topo = false, topo.isophotes = false;
-    iso.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
-    iso.isophote_count = s.isophote_count;
-    topo.topo_count = s.topo_count;
-    topo.topo_step = 2.0f * mesh.bounds().radius / float(std::max(1, s.topo_count));
-    topo.topo_first = mesh.bounds().center.y - mesh.bounds().radius + 0.5f * topo.topo_step;
     LineExtractionOptions levels = o;
-    levels.light = iso.light, levels.isophote_count = s.isophote_count, levels.topo_count = s.topo_count;
-    const LevelValues level = o.isophotes || o.topo ? level_values(m, fields, levels) : LevelValues{};
+    levels.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
+    levels.isophote_count = s.isophote_count;
+    levels.topo_count = s.topo_count;
+    levels.topo_step = 2.0f * mesh.bounds().radius / float(std::max(1, s.topo_count));
+    levels.topo_first = mesh.bounds().center.y - mesh.bounds().radius + 0.5f * levels.topo_step;
+    LineExtractionOptions iso = levels, topo = levels;
+    iso.topo = false, topo.isophotes = false;
 
     // Per family, the clusters that can hold its lines in this view (render/cluster_culling.h).
     std::vector<std::pair<uint8_t, std::vector<FaceRun>>> families;
@@ -191,41 +182,63 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
     const float iso_step = 1.0f / float(std::max(1, s.isophote_count));
     if (o.isophotes)
         families.push_back({kIsophotes, runs_or_all([&] {
-                                return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, iso.light,
+                                return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels.light,
                                                      {0.5f * iso_step, iso_step, s.isophote_count});
                             })});
     if (o.topo)
         families.push_back({kTopo, runs_or_all([&] {
                                 return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin,
-                                                 {topo.topo_first, topo.topo_step, topo.topo_count});
+                                                 {levels.topo_first, levels.topo_step, levels.topo_count});
                             })});
+    const std::vector<Block> blocks = blocks_of(families);
+
+    // Per vertex, once: what each family's per-face tests read. The
+    // view-dependent curvature of apparent ridges and principal highlights,
+    // the costliest, only at the vertices of the triangles they will test.
+    const ViewQuantities q = view_lines ? compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs)
+                                        : ViewQuantities{};
+    std::vector<uint8_t> ridge_needed;
+    if (l.view_ridges()) {
+        ridge_needed.assign(m.vertex_count(), 0);
+        for (const Block& block : blocks)
+            for (const MaskedRun& r : block.runs)
+                if (r.families & kViewRidges)
+                    for (uint32_t f = r.first; f < r.first + r.count; ++f)
+                        for (int k = 0; k < 3; ++k) ridge_needed[m.faces[f][k]] = 1;
+    }
+    const std::vector<ViewRidgeVertex> ridge_vertices =
+        l.view_ridges() ? view_ridge_vertices(m, fields, frame.eye, fs, ridge_needed) : std::vector<ViewRidgeVertex>{};
+    const LevelValues level = o.isophotes || o.topo ? level_values(m, fields, levels) : LevelValues{};
+    const LinePrefilter prefilter = make_line_prefilter(m, fields, q, ridge_vertices, vr, level, levels);
 
     // One pass over the faces for every family, block by block, the blocks
     // taken by the workers as they come free; each block writes its own
     // vertices, joined in block order (the same buffer for any thread count).
-    const std::vector<Block> pieces = blocks_of(families);
     ScreenMergeParams merge;
     merge.mvp = frame.mvp, merge.viewport = frame.viewport;
     merge.depth_params = glm::vec2(frame.projection[2][2], frame.projection[3][2]);
-    std::vector<std::vector<QuadVertex>> piece_vertices(pieces.size());
-    parallel_for_dynamic(pieces.size(), [&](size_t i) {
-        ExtractedLines found;
-        for (const MaskedRun& r : pieces[i].runs) {
+    std::vector<std::vector<QuadVertex>> block_vertices(blocks.size());
+    parallel_for_dynamic(blocks.size(), [&](size_t i) {
+        thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
+        for (auto& segments : found) segments.clear();
+        for (const MaskedRun& r : blocks[i].runs) {
             for (uint32_t f = r.first; f < r.first + r.count; ++f) {
                 const Face& face = m.faces[f];
-                if (r.families & kViewLines) extract_view_lines_of_face(m, face, fields, q, o, found);
-                if (r.families & kCurvatureLines) curvature_lines_of_face(m, face, fields, o, found);
-                if (r.families & kViewRidges)
+                const uint8_t families = prefilter.families_on(face, r.families);
+                if (!families) continue;
+                if (families & kViewLines) extract_view_lines_of_face(m, face, fields, q, o, found);
+                if (families & kCurvatureLines) curvature_lines_of_face(m, face, fields, o, found);
+                if (families & kViewRidges)
                     view_ridges_of_face(m, face, fields, ridge_vertices, vr, found[int(LineType::ApparentRidge)],
                                         found[int(LineType::PrincipalHighlight)]);
-                if (r.families & kIsophotes) level_lines_of_face(m, face, level, iso, found);
-                if (r.families & kTopo) level_lines_of_face(m, face, level, topo, found);
+                if (families & kIsophotes) level_lines_of_face(m, face, level, iso, found);
+                if (families & kTopo) level_lines_of_face(m, face, level, topo, found);
             }
         }
-        append_quads(found, merge, piece_vertices[i]);
+        append_quads(found, merge, block_vertices[i]);
     });
     size_t total = 0;
-    for (const auto& v : piece_vertices) total += v.size();
+    for (const auto& v : block_vertices) total += v.size();
     if (total == 0) return;
     glBindVertexArray(vao_);
     ensure_indices(total / 4);
@@ -241,7 +254,7 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(total * sizeof(QuadVertex)), nullptr, GL_STREAM_DRAW);
     GLintptr offset = 0;
-    for (const auto& v : piece_vertices) {
+    for (const auto& v : block_vertices) {
         if (v.empty()) continue;
         glBufferSubData(GL_ARRAY_BUFFER, offset, GLsizeiptr(v.size() * sizeof(QuadVertex)), v.data());
         offset += GLintptr(v.size() * sizeof(QuadVertex));

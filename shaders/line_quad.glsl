@@ -1,5 +1,5 @@
 // Shared by the line geometry shaders: a 3D segment becomes a screen-space
-// quad of the line width plus one pixel of anti-aliasing margin, extended
+// quad of the line width plus half a pixel of anti-aliasing margin, extended
 // by the same amount past both ends (round caps, so consecutive segments
 // join without gaps). lines_frag.glsl computes the exact coverage.
 //
@@ -53,7 +53,7 @@ void emit_window_segment(vec3 p0, vec3 p1, float alpha0, float alpha1, float tol
     float len = length(dir);
     dir = len > 1e-6 ? dir / len : vec2(1.0, 0.0);
     vec2 nrm = vec2(-dir.y, dir.x);
-    float r = 0.5 * width + 1.0;
+    float r = 0.5 * width + 0.5;  // lines_frag.glsl gives no coverage farther from the centre line
     segment_ = vec4(p0.xy, p1.xy);
     depth_ = vec2(p0.z, p1.z);
     alpha_ = vec2(alpha0, alpha1);

@@ -53,7 +53,7 @@ void main() {
     float len = length(dir);
     dir = len > 1e-6 ? dir / len : vec2(1.0, 0.0);
     vec2 nrm = vec2(-dir.y, dir.x);
-    float r = 0.5 * u_line_width + 1.0;
+    float r = 0.5 * u_line_width + 0.5;  // lines_frag.glsl gives no coverage farther from the centre line
     v_out.segment = vec4(p0.xy, p1.xy);
     v_out.depth = vec2(p0.z, p1.z);
     float z = min(p0.z, p1.z);  // any depth inside the range: depth testing is done in lines_frag

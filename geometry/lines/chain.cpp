@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
-#include <unordered_map>
+#include <tuple>
+#include <utility>
 
 namespace kappa {
 
@@ -11,11 +12,6 @@ namespace {
 struct PointKey {
     uint32_t x, y, z;
     bool operator==(const PointKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-struct PointKeyHash {
-    size_t operator()(const PointKey& k) const {
-        return (size_t(k.x) * 73856093u) ^ (size_t(k.y) * 19349663u) ^ (size_t(k.z) * 83492791u);
-    }
 };
 
 PointKey key_of(glm::vec3 p) {
@@ -30,22 +26,24 @@ PointKey key_of(glm::vec3 p) {
 }  // namespace
 
 std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
-    // Each end (segment * 2 + side) belongs to a point; ends of a point are listed together.
+    // Each end (segment * 2 + side) belongs to a point; ends of a point are
+    // listed together, in end order. Points are found by sorting the ends by
+    // their position's bits (no hash table: cheaper for the short lists of
+    // one block of a frame, and the same result).
     const size_t n = segments.size();
-    std::unordered_map<PointKey, uint32_t, PointKeyHash> point_of;
-    point_of.reserve(2 * n);
-    std::vector<uint32_t> end_point(2 * n);
-    for (size_t e = 0; e < 2 * n; ++e) {
-        const glm::vec3 p = e % 2 ? segments[e / 2].b : segments[e / 2].a;
-        end_point[e] = point_of.emplace(key_of(p), uint32_t(point_of.size())).first->second;
+    std::vector<std::pair<PointKey, uint32_t>> sorted(2 * n);
+    for (size_t e = 0; e < 2 * n; ++e) sorted[e] = {key_of(e % 2 ? segments[e / 2].b : segments[e / 2].a), uint32_t(e)};
+    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) {
+        return std::tie(a.first.x, a.first.y, a.first.z, a.second) < std::tie(b.first.x, b.first.y, b.first.z, b.second);
+    });
+    std::vector<uint32_t> end_point(2 * n), first, ends(2 * n);
+    first.reserve(2 * n + 1);
+    for (size_t i = 0; i < sorted.size(); ++i) {
+        if (i == 0 || !(sorted[i].first == sorted[i - 1].first)) first.push_back(uint32_t(i));
+        end_point[sorted[i].second] = uint32_t(first.size() - 1);
+        ends[i] = sorted[i].second;
     }
-    std::vector<uint32_t> first(point_of.size() + 1, 0), ends(2 * n);
-    for (uint32_t p : end_point) ++first[p + 1];
-    for (size_t i = 1; i < first.size(); ++i) first[i] += first[i - 1];
-    {
-        std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-        for (size_t e = 0; e < 2 * n; ++e) ends[fill[end_point[e]]++] = uint32_t(e);
-    }
+    first.push_back(uint32_t(sorted.size()));
     auto degree = [&](uint32_t p) { return first[p + 1] - first[p]; };
     // The other end at the same point, when the point joins exactly two ends.
     auto partner = [&](size_t e) -> long {

@@ -149,9 +149,11 @@ void principal_highlight(const Face& t, const glm::vec3 p[3], const VertexView* 
 }  // namespace
 
 std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye,
-                                                 float fs) {
+                                                 float fs, const std::vector<uint8_t>& only) {
     std::vector<ViewRidgeVertex> view(mesh.vertex_count());
+    const bool all = only.size() != view.size();
     parallel_for(view.size(), [&](size_t i) {
+        if (!all && !only[i]) return;
         const glm::vec3 to_eye = eye - mesh.positions[i];
         const ViewCurvature vc = view_curvature(f.k1[i], f.k2[i], f.dcurv[i], f.normals[i], f.d1[i], f.d2[i], to_eye);
         ViewRidgeVertex& v = view[i];

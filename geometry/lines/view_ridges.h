@@ -53,8 +53,10 @@ struct ViewRidgeVertex {
     float v_dmax;       // v.dmax
     float ph_strength;  // (kmax^2 - kmin^2) n.v fs^2
 };
+// only: empty, or one flag per vertex, non-zero where it is needed (the
+// others are left zero).
 std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye,
-                                                 float feature_size);
+                                                 float feature_size, const std::vector<uint8_t>& only = {});
 void view_ridges_of_face(const Mesh& mesh, const Face& face, const SurfaceFields& fields,
                          const std::vector<ViewRidgeVertex>& vertices, const ViewRidgeOptions& options,
                          std::vector<LineSegment>& apparent_ridges, std::vector<LineSegment>& principal_highlights);

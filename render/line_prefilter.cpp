@@ -1,0 +1,118 @@
+#include "render/line_prefilter.h"
+
+#include "geometry/parallel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kappa::render {
+
+namespace {
+
+enum Bit : uint32_t {
+    kUnreliable = 1u << 0,
+    kContourFront = 1u << 1,     // n.v > 0 with the contour normal
+    kKrPositive = 1u << 2,       // kr sin^2(theta) > 0
+    kSuggestive = 1u << 3,       // Dw kr fs^2 - s > 0 (suggestive contours; its sign change: dwkr)
+    kHighlight = 1u << 4,        // -Dw kr fs^2 - s_h > 0
+    kFront = 1u << 5,            // n.v > 0 with the fields' normal
+    kGaussPositive = 1u << 6,    // K > 0
+    kMeanPositive = 1u << 7,     // H > 0
+    kRidgeStrong = 1u << 8,      // |kmax| > rv_threshold / fs
+    kApparentStrong = 1u << 9,   // sqrt(q1) fs > ar_threshold
+    kKmaxNegative = 1u << 10,
+    kKmaxPositive = 1u << 11,
+    kPrincipalStrong = 1u << 12, // |(kmax^2 - kmin^2) n.v fs^2| > ph_threshold
+};
+constexpr int kIsophoteShift = 16, kTopoShift = 24;
+constexpr uint32_t kAnyBand = 255;  // too many levels, or a value on a level within rounding: always tested
+
+// How many of the levels first + k step (k < count) lie below v: a level
+// line crosses a triangle only where its vertices' bands differ.
+uint32_t band(float v, float first, float step, int count) {
+    if (count <= 0 || !(step > 0)) return 0;
+    if (count >= int(kAnyBand)) return kAnyBand;
+    const float x = (v - first) / step;
+    const float nearest = std::round(x);
+    if (std::fabs(x - nearest) < 1e-3f && nearest >= 0 && nearest < float(count)) return kAnyBand;
+    return uint32_t(std::clamp(std::floor(x) + 1.0f, 0.0f, float(count)));
+}
+
+bool bands_differ(uint32_t a, uint32_t b, uint32_t c, int shift) {
+    a = (a >> shift) & 255, b = (b >> shift) & 255, c = (c >> shift) & 255;
+    return a == kAnyBand || b == kAnyBand || c == kAnyBand || a != b || b != c;
+}
+
+}  // namespace
+
+LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
+                                  const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
+                                  const LevelValues& levels, const LineExtractionOptions& o) {
+    LinePrefilter p;
+    p.options = o;
+    p.apparent_ridges = ridge_options.apparent_ridges;
+    p.principal_highlights = ridge_options.principal_highlights;
+    const size_t n = mesh.vertex_count();
+    p.bits.assign(n, 0);
+    const bool has_view = view.kr.size() == n, has_ridges = ridges.size() == n;
+    const float rv_limit = o.rv_threshold / o.feature_size;
+    const float iso_step = 1.0f / float(std::max(1, o.isophote_count));
+    parallel_for(n, [&](size_t v) {
+        uint32_t b = fields.unreliable(v) ? kUnreliable : 0;
+        if (has_view) {
+            if (view.contour_ndotv[v] > 0) b |= kContourFront;
+            if (view.kr[v] > 0) b |= kKrPositive;
+            if (view.sc_strength[v] - o.sc_threshold > 0) b |= kSuggestive;
+            if (-view.sc_strength[v] - o.sh_threshold > 0) b |= kHighlight;
+            if (view.ndotv[v] > 0) b |= kFront;
+        }
+        if (fields.k1.size() == n && fields.k2.size() == n) {
+            const float k1 = fields.k1[v], k2 = fields.k2[v];
+            if (k1 * k2 > 0) b |= kGaussPositive;
+            if (0.5f * (k1 + k2) > 0) b |= kMeanPositive;
+            const float kmax = std::fabs(k1) >= std::fabs(k2) ? k1 : k2;
+            if (std::fabs(kmax) - rv_limit > 0) b |= kRidgeStrong;
+        }
+        if (has_ridges) {
+            const ViewRidgeVertex& r = ridges[v];
+            if (r.view_curv > ridge_options.ar_threshold) b |= kApparentStrong;
+            if (r.kmax < 0) b |= kKmaxNegative;
+            if (r.kmax > 0) b |= kKmaxPositive;
+            if (std::fabs(r.ph_strength) - ridge_options.ph_threshold > 0) b |= kPrincipalStrong;
+        }
+        if (levels.isophote.size() == n)
+            b |= band(levels.isophote[v], 0.5f * iso_step, iso_step, o.isophote_count) << kIsophoteShift;
+        if (levels.height.size() == n)
+            b |= band(levels.height[v], o.topo_first, o.topo_step, o.topo_count) << kTopoShift;
+        p.bits[v] = b;
+    });
+    return p;
+}
+
+uint8_t LinePrefilter::families_on(const Face& t, uint8_t wanted) const {
+    const uint32_t a = bits[t[0]], b = bits[t[1]], c = bits[t[2]];
+    const uint32_t any = a | b | c, differ = any & ~(a & b & c);
+    const bool reliable = !(any & kUnreliable);
+    const LineExtractionOptions& o = options;
+    uint8_t families = 0;
+    if (wanted & kViewLines) {
+        const bool suggestive_kinds =
+            reliable && (any & kFront) &&
+            ((o.suggestive && (differ & kKrPositive) && (any & kSuggestive)) ||
+             (o.suggestive_highlights && (differ & kKrPositive) && (any & kHighlight)) || (o.dwkr && (differ & kSuggestive)));
+        if ((o.contours && (differ & kContourFront)) || suggestive_kinds) families |= kViewLines;
+    }
+    if ((wanted & kCurvatureLines) && reliable &&
+        ((o.parabolic && (differ & kGaussPositive)) || (o.mean_zero && (differ & kMeanPositive)) ||
+         ((o.ridges || o.valleys) && (any & kRidgeStrong))))
+        families |= kCurvatureLines;
+    if ((wanted & kViewRidges) && reliable &&
+        ((apparent_ridges && (any & kApparentStrong)) ||
+         (principal_highlights && !((any & kKmaxNegative) && (any & kKmaxPositive)) && (any & kPrincipalStrong))))
+        families |= kViewRidges;
+    if ((wanted & kIsophotes) && bands_differ(a, b, c, kIsophoteShift)) families |= kIsophotes;
+    if ((wanted & kTopo) && bands_differ(a, b, c, kTopoShift)) families |= kTopo;
+    return families;
+}
+
+}  // namespace kappa::render

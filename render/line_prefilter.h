@@ -1,0 +1,45 @@
+// Which line families can cross a triangle, from one word per vertex, so
+// the CPU line pass (render/cpu_lines.h) runs the exact per-triangle tests
+// of geometry/lines only where a line may be. Conservative: a family is
+// skipped only when its exact test must fail, because
+//   - a zero set (n.v, kr, Dw kr - s, K, H) crosses a triangle only where its
+//     vertex values change sign;
+//   - a clipped line (suggestive contours and highlights, ridges and
+//     valleys, apparent ridges, principal highlights) is kept only where a
+//     linearly interpolated strength exceeds its threshold, which needs one
+//     vertex above it (and n.v > 0 at one vertex, for the suggestive kinds);
+//   - principal highlights need kmax of one sign and unreliable vertices
+//     draw none of the curvature-based kinds;
+//   - a level line crosses only where the vertices lie in different bands
+//     between consecutive levels.
+#pragma once
+
+#include "geometry/lines/level_lines.h"
+#include "geometry/lines/line_extraction.h"
+#include "geometry/lines/view_quantities.h"
+#include "geometry/lines/view_ridges.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace kappa::render {
+
+// The families of line types of the CPU line pass, each with its own choice of clusters.
+enum LineFamily : uint8_t { kViewLines = 1, kCurvatureLines = 2, kViewRidges = 4, kIsophotes = 8, kTopo = 16 };
+
+struct LinePrefilter {
+    std::vector<uint32_t> bits;  // per vertex
+    LineExtractionOptions options;  // types on, thresholds
+    bool apparent_ridges = false, principal_highlights = false;
+    // The families of `wanted` that may have a line on triangle t.
+    uint8_t families_on(const Face& t, uint8_t wanted) const;
+};
+
+// options: as for the per-triangle tests, with isophote and topo levels
+// (isophote_count, topo_first, topo_step, topo_count); the other inputs may
+// be empty where their families are off. Parallel over vertices.
+LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
+                                  const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
+                                  const LevelValues& levels, const LineExtractionOptions& options);
+
+}  // namespace kappa::render
