@@ -17,6 +17,7 @@ public:
 
 private:
     ShaderProgram program_;
+    ShaderProgram plain_;  // without a colour map: reads only positions and normals
 };
 
 }  // namespace kappa::render
