@@ -3,6 +3,7 @@
 #include "app/cli_options.h"
 
 #include <cmath>
+#include <optional>
 #include <cstdio>
 
 namespace kappa::app {
@@ -81,6 +82,30 @@ AppearanceSetting count(std::string name, std::string help, int lo, int hi, int 
     return a;
 }
 
+// On or off, as a checkbox in the panel; cli_flag: on the command line a
+// flag without value (--colorbar) instead of --NAME on|off.
+AppearanceSetting switch_setting(std::string name, std::string help, bool RenderSettings::*field, std::string label,
+                                 bool cli_flag = false) {
+    AppearanceSetting a{std::move(name), "on|off", std::move(help), "on or off", on_off(field),
+                        cli_flag ? field : nullptr};
+    a.choices = {"off", "on"};
+    a.get = [=](const RenderSettings& s) { return std::string(s.*field ? "on" : "off"); };
+    a.label = std::move(label);
+    return a;
+}
+
+// One of the names of an enum (render_settings.h), as a combo box in the panel.
+template <typename T>
+AppearanceSetting choice_setting(std::string name, const std::vector<std::string>& names, std::string help,
+                                 std::optional<T> (*parse)(const std::string&), T RenderSettings::*field,
+                                 std::string label) {
+    AppearanceSetting a{std::move(name), cli::join(names, "|"), std::move(help), one_of(names), word(parse, field)};
+    a.choices = names;
+    a.get = [=](const RenderSettings& s) { return names[size_t(s.*field)]; };
+    a.label = std::move(label);
+    return a;
+}
+
 }  // namespace
 
 const std::vector<AppearanceSetting>& appearance_settings() {
@@ -123,21 +148,22 @@ const std::vector<AppearanceSetting>& appearance_settings() {
               &R::topo_count, 100),
         real("line-width", "PX", "line width in pixels (default 2)", 0.1f, 64, &R::line_width, 0.5f, 8, false,
              "%.1f px"),
-        {"fade", "on|off",
-         "fade weak lines towards their threshold: suggestive contours and highlights, ridges and valleys, apparent "
-         "ridges, principal highlights (default on)", "on or off", on_off(&R::fade)},
+        switch_setting("fade",
+                       "fade weak lines towards their threshold: suggestive contours and highlights, ridges and "
+                       "valleys, apparent ridges, principal highlights (default on)",
+                       &R::fade, "fade"),
         {"vectors", "LIST",
          "direction glyphs (at about one vertex per 600 pixels of the image), comma list of: normal, principal1, "
          "principal2, asymptotic, view, "
          "none (default none)",
          "a comma list of " + cli::join(render::vector_names(), ", ") + ", or none",
          word(render::parse_vectors, &R::vectors)},
-        {"hidden-lines", "on|off", "also draw the hidden parts of the chosen lines, dashed and light (default off)",
-         "on or off", on_off(&R::hidden_lines)},
-        {"shading", cli::join(render::shading_names(), "|"),
-         "surface shading: none (white paper), lambert, toon (three greys), hemisphere, toon-bw (two tones), gooch "
-         "(cool to warm) (default lambert)",
-         one_of(render::shading_names()), word(render::parse_shading, &R::shading)},
+        switch_setting("hidden-lines", "also draw the hidden parts of the chosen lines, dashed and light (default off)",
+                       &R::hidden_lines, "hidden lines, dashed"),
+        choice_setting("shading", render::shading_names(),
+                       "surface shading: none (white paper), lambert, toon (three greys), hemisphere, toon-bw (two "
+                       "tones), gooch (cool to warm) (default lambert)",
+                       render::parse_shading, &R::shading, "shading"),
         {"light", "X,Y,Z",
          "direction towards the light in camera coordinates (x right, y up, z towards the viewer; "
          "default -0.35,0.45,1)",
@@ -147,22 +173,27 @@ const std::vector<AppearanceSetting>& appearance_settings() {
              if (d) s.light_dir = *d;
              return bool(d);
          }},
-        {"light-frame", "camera|model",
-         "what --light is fixed to: the camera (the light moves with the view) or the model (it turns with the "
-         "model) (default camera)",
-         "camera or model",
-         [](R& s, const std::string& v) {
-             if (v != "camera" && v != "model") return false;
-             s.light_on_model = v == "model";
-             return true;
-         }},
-        {"colormap", cli::join(render::colormap_names(), "|"), "curvature colour map (default none)",
-         one_of(render::colormap_names()), word(render::parse_colormap, &R::colormap)},
-        {"colorbar", "on|off", "draw the colour map's legend, with its values, at the right edge", "on or off",
-         on_off(&R::colorbar), &R::colorbar},
-        {"hatching", cli::join(render::hatching_names(), "|"),
-         "principal-direction hatching: strokes along the min or max direction, or both (default none)",
-         one_of(render::hatching_names()), word(render::parse_hatching, &R::hatching)},
+        [] {
+            AppearanceSetting a{"light-frame", "camera|model",
+                                "what --light is fixed to: the camera (the light moves with the view) or the model "
+                                "(it turns with the model) (default camera)",
+                                "camera or model", [](R& s, const std::string& v) {
+                                    if (v != "camera" && v != "model") return false;
+                                    s.light_on_model = v == "model";
+                                    return true;
+                                }};
+            a.choices = {"camera", "model"};
+            a.get = [](const R& s) { return std::string(s.light_on_model ? "model" : "camera"); };
+            a.label = "frame";  // the light's, drawn under its direction
+            return a;
+        }(),
+        choice_setting("colormap", render::colormap_names(), "curvature colour map (default none)",
+                       render::parse_colormap, &R::colormap, "colour map"),
+        switch_setting("colorbar", "draw the colour map's legend, with its values, at the right edge (default off)", &R::colorbar,
+                       "colour bar", true),
+        choice_setting("hatching", render::hatching_names(),
+                       "principal-direction hatching: strokes along the min or max direction, or both (default none)",
+                       render::parse_hatching, &R::hatching, "hatching"),
         real("hatch-spacing", "PX", "pixels between hatching strokes in the darkest tone (default 4)", 2, 100,
              &R::hatch_spacing, 2, 30, false, "%.1f px"),
         real("min-stroke", "PX", "vector output: drop visible paths shorter than PX pixels (default 0: keep all)", 0,
@@ -180,7 +211,7 @@ const std::vector<AppearanceSetting>& appearance_settings() {
          "on or off", on_off(&R::plotter), &R::plotter},
         {"background", "COLOR", "white, transparent, black or #rrggbb (default white)",
          "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)},
-        {"msaa", "on|off", "4x multisampling of the surface (default on)", "on or off", on_off(&R::msaa)},
+        switch_setting("msaa", "4x multisampling of the surface (default on)", &R::msaa, "4x MSAA"),
         {"line-extraction", "auto|gpu|cpu",
          "where the lines are extracted: on the CPU (fast on software GL such as llvmpipe), in geometry shaders "
          "(fast on GPUs), or auto: the CPU on software GL (default auto)",

@@ -33,6 +33,12 @@ struct AppearanceSetting {
     float slider_min = 0, slider_max = 0;
     bool logarithmic = false;
     const char* format = "%.3f";
+    // Settings that take one of a few words are drawn from these: `choices`
+    // as a combo box, or as a checkbox when they are exactly off and on;
+    // `get` gives the current word, `set` takes the one picked.
+    std::vector<std::string> choices;
+    std::function<std::string(const render::RenderSettings&)> get;
+    std::string label;  // in the panel (empty: the name)
 };
 
 const std::vector<AppearanceSetting>& appearance_settings();

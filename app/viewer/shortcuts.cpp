@@ -25,14 +25,14 @@ const std::vector<Shortcut>& shortcuts() {
         {GLFW_KEY_H, GLFW_MOD_CONTROL, "Ctrl+H", Action::ToggleLine, "H = 0 lines on/off", "mean-zero"},
         {GLFW_KEY_I, 0, "I", Action::ToggleLine, "isophotes on/off", "isophotes"},
         {GLFW_KEY_T, 0, "T", Action::ToggleLine, "topographic lines on/off", "topo"},
-        {GLFW_KEY_D, 0, "D", Action::ToggleHiddenLines, "hidden lines (dashed) on/off"},
-        {GLFW_KEY_L, 0, "L", Action::CycleShading, "next shading: none, lambert, toon, hemisphere, toon-bw, gooch"},
-        {GLFW_KEY_L, GLFW_MOD_CONTROL, "Ctrl+L", Action::ToggleLightFrame, "light fixed to the camera or the model"},
-        {GLFW_KEY_M, 0, "M", Action::CycleColorMap, "next curvature colour map"},
-        {GLFW_KEY_K, 0, "K", Action::ToggleColorBar, "colour bar on/off"},
-        {GLFW_KEY_H, 0, "H", Action::CycleHatching, "next hatching: none, min, max, cross"},
-        {GLFW_KEY_G, 0, "G", Action::ToggleFade, "fading of weak lines on/off"},
-        {GLFW_KEY_A, 0, "A", Action::ToggleMsaa, "4x multisampling on/off"},
+        {GLFW_KEY_D, 0, "D", Action::ToggleHiddenLines, "hidden lines (dashed) on/off", nullptr, "hidden-lines"},
+        {GLFW_KEY_L, 0, "L", Action::CycleShading, "next shading: none, lambert, toon, hemisphere, toon-bw, gooch", nullptr, "shading"},
+        {GLFW_KEY_L, GLFW_MOD_CONTROL, "Ctrl+L", Action::ToggleLightFrame, "light fixed to the camera or the model", nullptr, "light-frame"},
+        {GLFW_KEY_M, 0, "M", Action::CycleColorMap, "next curvature colour map", nullptr, "colormap"},
+        {GLFW_KEY_K, 0, "K", Action::ToggleColorBar, "colour bar on/off", nullptr, "colorbar"},
+        {GLFW_KEY_H, 0, "H", Action::CycleHatching, "next hatching: none, min, max, cross", nullptr, "hatching"},
+        {GLFW_KEY_G, 0, "G", Action::ToggleFade, "fading of weak lines on/off", nullptr, "fade"},
+        {GLFW_KEY_A, 0, "A", Action::ToggleMsaa, "4x multisampling on/off", nullptr, "msaa"},
         {GLFW_KEY_EQUAL, 0, "=", Action::WiderLines, "wider lines"},
         {GLFW_KEY_MINUS, 0, "-", Action::ThinnerLines, "thinner lines"},
         {GLFW_KEY_RIGHT_BRACKET, 0, "]", Action::RaiseThreshold, "raise the suggestive-contour threshold"},
@@ -70,6 +70,12 @@ const Shortcut* find_shortcut(const std::string& name) {
     };
     for (const auto& s : shortcuts())
         if (lower(s.name) == lower(name)) return &s;
+    return nullptr;
+}
+
+const Shortcut* find_setting_shortcut(const std::string& setting) {
+    for (const auto& s : shortcuts())
+        if (s.setting && setting == s.setting) return &s;
     return nullptr;
 }
 

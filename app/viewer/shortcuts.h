@@ -20,6 +20,7 @@ struct Shortcut {
     Action action;
     const char* description;
     const char* line = nullptr;  // ToggleLine: the line kind (render::line_kinds())
+    const char* setting = nullptr;  // the appearance setting it toggles or cycles (app/appearance_settings.h)
 };
 
 const std::vector<Shortcut>& shortcuts();
@@ -31,5 +32,7 @@ const Shortcut* find_shortcut(int key, int mods);
 const Shortcut* find_shortcut(const std::string& name);
 // The key that toggles a line kind ("C" for contours), nullptr when none does.
 const Shortcut* find_line_shortcut(const std::string& line);
+// The shortcut that toggles or cycles an appearance setting, if any.
+const Shortcut* find_setting_shortcut(const std::string& setting);
 
 }  // namespace kappa::viewer

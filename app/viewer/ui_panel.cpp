@@ -19,21 +19,6 @@ namespace {
 
 using render::ColorMap;
 
-// A combo box over an enum whose names come from render_settings.h.
-template <typename E>
-bool enum_combo(const char* label, E& value, const std::vector<std::string>& names) {
-    int index = int(value);
-    const bool changed = ImGui::Combo(
-        label, &index,
-        [](void* data, int i, const char** out) {
-            *out = (*static_cast<const std::vector<std::string>*>(data))[size_t(i)].c_str();
-            return true;
-        },
-        const_cast<std::vector<std::string>*>(&names), int(names.size()));
-    if (changed) value = E(index);
-    return changed;
-}
-
 // The setting's help from the one table of settings (app/appearance_settings.h)
 // as the tooltip of the widget drawn last.
 void help_tooltip(const char* setting) {
@@ -54,6 +39,25 @@ void setting_slider(const app::AppearanceSetting& a, render::RenderSettings& s) 
 
 void setting_slider(const char* name, render::RenderSettings& s) {
     if (const app::AppearanceSetting* a = app::find_appearance_setting(name)) setting_slider(*a, s);
+}
+
+// A setting of a few words from the table: a checkbox when they are off and
+// on, else a combo box; labelled as the table says, with its key if it has one.
+void setting_widget(const char* name, render::RenderSettings& s) {
+    const app::AppearanceSetting* a = app::find_appearance_setting(name);
+    if (!a || a->choices.empty() || !a->get) return;
+    std::string label = a->label.empty() ? a->name : a->label;
+    if (const Shortcut* key = find_setting_shortcut(a->name)) label += std::string(" (") + key->name + ")";
+    const std::string current = a->get(s);
+    if (a->choices == std::vector<std::string>{"off", "on"}) {
+        bool on = current == "on";
+        if (ImGui::Checkbox(label.c_str(), &on)) a->set(s, on ? "on" : "off");
+    } else if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+        for (const std::string& choice : a->choices)
+            if (ImGui::Selectable(choice.c_str(), choice == current)) a->set(s, choice);
+        ImGui::EndCombo();
+    }
+    help_tooltip(name);
 }
 
 // The line kinds of one of app::line_groups(): a checkbox each (with its
@@ -79,18 +83,16 @@ void lines_section(render::RenderSettings& s) {
     if (!ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) return;
     for (const app::LineGroup& g : app::line_groups()) line_group(g, s);
     ImGui::Separator();
-    ImGui::Checkbox("hidden lines, dashed (D)", &s.hidden_lines);
-    help_tooltip("hidden-lines");
+    setting_widget("hidden-lines", s);
     ImGui::SameLine();
-    ImGui::Checkbox("fade (G)", &s.fade);
-    help_tooltip("fade");
-    // Direction glyphs: one checkbox a direction.
-    const char* glyphs[] = {"normal", "d1", "d2", "asymptotic", "view"};
+    setting_widget("fade", s);
+    // Direction glyphs: one checkbox a direction, as --vectors names them.
+    const std::vector<std::string>& glyphs = render::vector_names();
     ImGui::TextUnformatted("vectors");
-    for (int i = 0; i < 5; ++i) {
-        if (i != 3) ImGui::SameLine();  // two rows: the panel is narrow
+    for (int i = 0; i < int(glyphs.size()); ++i) {
+        if (i != 2) ImGui::SameLine();  // two rows: the panel is narrow
         bool on = (s.vectors >> i) & 1;
-        if (ImGui::Checkbox(glyphs[i], &on)) s.vectors = on ? s.vectors | (1 << i) : s.vectors & ~(1 << i);
+        if (ImGui::Checkbox(glyphs[size_t(i)].c_str(), &on)) s.vectors = on ? s.vectors | (1 << i) : s.vectors & ~(1 << i);
         help_tooltip("vectors");
     }
     bool detail_on = s.detail > 0;
@@ -106,30 +108,24 @@ void lines_section(render::RenderSettings& s) {
 
 void surface_section(render::RenderSettings& s, float map_range) {
     if (!ImGui::CollapsingHeader("Surface", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    enum_combo("shading (L)", s.shading, render::shading_names());
-    help_tooltip("shading");
+    setting_widget("shading", s);
     ImGui::SliderFloat3("light", &s.light_dir.x, -1.0f, 1.0f, "%.2f");
     help_tooltip("light");
-    ImGui::Checkbox("light turns with the model (Ctrl+L)", &s.light_on_model);
-    help_tooltip("light-frame");
+    setting_widget("light-frame", s);
     if (glm::length(s.light_dir) < 1e-3f) s.light_dir = {0, 0, 1};
-    enum_combo("colour map (M)", s.colormap, render::colormap_names());
-    help_tooltip("colormap");
+    setting_widget("colormap", s);
     if (s.colormap != ColorMap::None) {
-        ImGui::Checkbox("colour bar (K)", &s.colorbar);
-        help_tooltip("colorbar");
+        setting_widget("colorbar", s);
         if (s.colormap == ColorMap::DCurv)
             ImGui::Text("range [0, %.4g]", map_range);
         else
             ImGui::Text("range [-%.4g, %.4g]", map_range, map_range);
     }
-    enum_combo("hatching (H)", s.hatching, render::hatching_names());
-    help_tooltip("hatching");
+    setting_widget("hatching", s);
     if (s.hatching != render::Hatching::None) setting_slider("hatch-spacing", s);
     ImGui::ColorEdit4("background", &s.background.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreview);
     help_tooltip("background");
-    ImGui::Checkbox("4x MSAA (A)", &s.msaa);
-    help_tooltip("msaa");
+    setting_widget("msaa", s);
 }
 
 // Widths as multiples of the feature size are easier to choose than model units.
