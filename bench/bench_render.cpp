@@ -3,10 +3,11 @@
 // suggestive contours + hatching, on the default model and bunny-1M.ply;
 // and with every line type of --lines on (issue 12: at most 1.5x the
 // contours + suggestive frame), the ratio printed.
-//   bench_render [--size WxH] [--frames N] [--each] [--detail PX] [MESH ...]   (default: built-in
+//   bench_render [--size WxH] [--frames N] [--each] [--detail PX] [--only NAME] [MESH ...]   (default: built-in
 //   model and ../shared/meshes/bunny-1M.ply next to the repository; --each: also every line type
 //   alone; --detail: the fields at that scale for the view, as kappa render draws by default,
-//   instead of the raw 1-ring fields)
+//   instead of the raw 1-ring fields; --only: Lambert and the configurations whose name contains NAME,
+//   e.g. to profile one)
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
@@ -69,12 +70,13 @@ int main(int argc, char** argv) {
     int width = 1024, height = 768, frames = 20;
     bool each = false, rtsc = false;
     float detail = 0;
-    std::string xf;
+    std::string xf, only;
     std::vector<std::string> meshes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--each")) each = true;
         else if (!std::strcmp(argv[i], "--rtsc")) rtsc = true;
         else if (!std::strcmp(argv[i], "--xf") && i + 1 < argc) xf = argv[++i];
+        else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!std::strcmp(argv[i], "--detail") && i + 1 < argc) detail = float(std::atof(argv[++i]));
         else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
@@ -123,6 +125,12 @@ int main(int argc, char** argv) {
             one.lines.*(k.flag) = true;
             configs.push_back({k.name.c_str(), one});
         }
+    if (!only.empty()) {  // the first configuration (the baseline of the percentages) and those named
+        std::vector<Config> kept{configs.front()};
+        for (size_t i = 1; i < configs.size(); ++i)
+            if (std::string(configs[i].name).find(only) != std::string::npos) kept.push_back(configs[i]);
+        configs = kept;
+    }
     for (auto& c : configs) c.settings.msaa = false;
     auto with_msaa = configs;
     for (auto& c : with_msaa) c.settings.msaa = true;
