@@ -6,6 +6,7 @@
 // Default MESH: ../shared/meshes/bunny-1M.ply next to the repository.
 #include "median.h"
 
+#include "bench_mesh.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/parallel.h"
 #include "geometry/surface_analysis.h"
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
     size_t nv = 0, nf = 0;
     for (int r = 0; r < runs; ++r) {
         const double t0 = now();
-        const Mesh mesh = load_mesh(path);
+        const Mesh mesh = bench::load_or_exit(path);
         const double t1 = now();
         StageTimes st;
         const SurfaceFields fields = compute_surface_fields(mesh, {}, &st);
