@@ -108,7 +108,7 @@ int run_render(int argc, char** argv) {
         const double load_s = seconds_since(t_load) - drawing.times().total() - drawing.scale_seconds();
 
         glm::vec3 orbit_center;
-        const render::Camera camera = make_camera(options.camera, mesh, drawing.bounds(), size, &orbit_center);
+        const render::Camera camera = make_camera(options.camera, mesh, drawing.bounds(), size, &orbit_center, drawing.units());
 
         const auto t_context = Clock::now();
         std::unique_ptr<render::HeadlessContext> context;
@@ -153,7 +153,8 @@ int run_render(int argc, char** argv) {
             if (!quiet && (i == 0 || s.detail > 0)) {
                 if (s.detail > 0) std::printf("  fields at %g px detail", s.detail);
                 else std::printf("  fields");
-                std::printf(", feature size %.6g: %.3f s (upload included)\n", view_fs, upload_s);
+                std::printf(", feature size %.6g: %.3f s (upload included)\n", drawing.units().length_to_model(view_fs),
+                            upload_s);
                 if (s.colormap != render::ColorMap::None)
                     std::printf("  colour map %s over %s%.6g]\n", render::to_string(s.colormap).c_str(),
                                 s.colormap == render::ColorMap::DCurv ? "[0, " : "[-",

@@ -24,6 +24,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
                          const ProgressFn& progress)
     : settings_(settings), smoothing_(smoothing), progress_(progress) {
+    units_ = drawing_units(input);
+    to_drawing_units(input, units_);
     // Sharp edges split the mesh: each side gets its own normals and curvature.
     crease_angle_ = render::resolved_crease_angle(settings.crease_angle, input);
     const std::vector<glm::uvec2> creases = find_creases(input, crease_angle_);
@@ -39,7 +41,12 @@ MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, con
     scale_s_ = seconds_since(t_scale);
 }
 
-SurfaceFields MeshDrawing::compute_fields() { return compute_surface_fields(drawn_.mesh, smoothing_, &times_, progress_); }
+SurfaceFields MeshDrawing::compute_fields() {
+    SmoothingOptions o = smoothing_;  // widths in drawing units
+    o.normals = units_.length_to_drawing(o.normals), o.curvature = units_.length_to_drawing(o.curvature);
+    o.dcurv = units_.length_to_drawing(o.dcurv);
+    return compute_surface_fields(drawn_.mesh, o, &times_, progress_);
+}
 
 float MeshDrawing::prepare_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size) {
     const Mesh& mesh = drawn_.mesh;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "geometry/creases.h"
+#include "geometry/drawing_units.h"
 #include "geometry/surface_analysis.h"
 #include "render/camera.h"
 #include "render/detail_fields.h"
@@ -31,13 +32,16 @@ public:
     MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
                 const ProgressFn& progress = {});
 
+    // The mesh as drawn, and its bounds: in drawing units (geometry/drawing_units.h), which are the
+    // model's own but for meshes far from unit size; cameras are in the same units (make_camera).
     const Mesh& mesh() const { return drawn_.mesh; }
     const render::BoundingSphere& bounds() const { return bounds_; }
+    const DrawingUnits& units() const { return units_; }
     size_t crease_count() const { return drawn_.creases.size(); }
     float crease_angle() const { return crease_angle_; }
     const StageTimes& times() const { return times_; }
     double scale_seconds() const { return scale_s_; }  // feature size, or the scale space with detail
-    float noise_floor() const { return detail_source_.noise_floor; }
+    float noise_floor() const { return units_.length_to_model(detail_source_.noise_floor); }  // model units
 
     // Uploads the fields of this view to `renderer` (the whole mesh on the
     // first view; nothing when this view was the last one prepared). The
@@ -65,7 +69,8 @@ private:
     SurfaceFields compute_fields();
 
     render::RenderSettings settings_;
-    SmoothingOptions smoothing_;
+    SmoothingOptions smoothing_;  // as given (model units)
+    DrawingUnits units_;
     ProgressFn progress_;
     float crease_angle_ = 0;
     SplitMesh drawn_;

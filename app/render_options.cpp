@@ -79,13 +79,15 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b) {
            a.automatic == b.automatic && a.estimator == b.estimator;
 }
 
-render::Camera make_camera(const CameraOptions& c, const Mesh& mesh, const render::BoundingSphere& bounds,
-                           glm::ivec2 size, glm::vec3* orbit_center) {
+render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
+                           glm::ivec2 size, glm::vec3* orbit_center, const DrawingUnits& units) {
+    CameraOptions c = options;
+    c.eye = units.to_drawing(c.eye), c.target = units.to_drawing(c.target);
     const float aspect = float(size.x) / float(size.y);
     if (orbit_center) *orbit_center = bounds.center;
     render::Camera camera;
     if (!c.xf_path.empty()) {
-        camera.view = render::read_xf(c.xf_path);
+        camera.view = units.view_to_drawing(render::read_xf(c.xf_path));
         camera.fov_y_deg = c.has_fov ? c.fov : render::rtsc_fov_y_deg(size.x, size.y);
         return camera;
     }

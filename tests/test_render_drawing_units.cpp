@@ -1,0 +1,81 @@
+// Meshes far from unit size (geometry/drawing_units.h) are drawn from a copy
+// of unit size: the same picture as the mesh at its own size, with cameras
+// given in model units converted; and the conversion of a view matrix keeps
+// every point where it was on screen.
+#include <catch2/catch.hpp>
+
+#include "test_render_fixtures.h"
+#include "test_support.h"
+
+#include "geometry/drawing_units.h"
+#include "geometry/io/mesh_io.h"
+#include "render/ink_agreement.h"
+#include "render/png_writer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstdio>
+#include <string>
+
+using namespace kappa;
+
+namespace {
+
+std::string kappa_render(const std::string& args) { return std::string(KAPPA_EXE) + " render " + args; }
+
+}  // namespace
+
+TEST_CASE("kappa render draws a mesh scaled by 1e20 or 1e-20 as it draws the mesh itself", "[render][cli]") {
+    // geometry/drawing_units.h: such meshes are drawn from a copy of unit size,
+    // and cameras given in model units (--eye) are converted.
+    const std::string dir = test::temp_dir();
+    const Mesh mesh = load_mesh(test::shared_mesh("fandisk.obj"));
+    const auto draw = [&](float scale, const std::string& name) {
+        auto number = [](double x) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.9g", x);
+            return std::string(text);
+        };
+        std::string obj;
+        for (const glm::vec3& p : mesh.positions)
+            obj += "v " + number(double(p.x) * scale) + " " + number(double(p.y) * scale) + " " +
+                   number(double(p.z) * scale) + "\n";
+        for (const Face& f : mesh.faces)
+            obj += "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " + std::to_string(f[2] + 1) + "\n";
+        test::write_file(dir + "/" + name + ".obj", obj);
+        // --eye without --target: only its direction counts, in model units like the mesh.
+        const std::string eye = " --eye " + number(3.0 * scale) + "," + number(2.0 * scale) + "," + number(4.0 * scale);
+        const auto r = test::run_command(kappa_render(dir + "/" + name + ".obj -o " + dir + "/" + name + ".png -q " +
+                                                      "--size 240x180 --lines contours,suggestive,creases,ridges" + eye));
+        REQUIRE(r.exit_code == 0);
+        return render::read_png(dir + "/" + name + ".png");
+    };
+    const render::Image plain = draw(1.0f, "plain"), huge = draw(1e20f, "huge"), tiny = draw(1e-20f, "tiny");
+    CHECK(test::count_ink(plain) > 500);
+    // Only the last bits of the scaled coordinates (printed with 9 digits) differ.
+    CHECK(render::ink_within(plain, huge, 1.0f) > 0.99);
+    CHECK(render::ink_within(huge, plain, 1.0f) > 0.99);
+    CHECK(render::ink_within(plain, tiny, 1.0f) > 0.99);
+    CHECK(render::ink_within(tiny, plain, 1.0f) > 0.99);
+}
+
+TEST_CASE("a view matrix converted to drawing units puts every point where it was, scaled", "[render][units]") {
+    Mesh mesh;
+    mesh.positions = {{3e20f, 1e20f, -2e20f}, {5e20f, 2e20f, -1e20f}, {4e20f, 3e20f, 0.0f}};
+    mesh.faces = {{0, 1, 2}};
+    const DrawingUnits units = drawing_units(mesh);
+    REQUIRE(!units.identity());
+    // Built in double: in float the lengths of such vectors overflow (what drawing units avoid).
+    const glm::mat4 view = glm::mat4(glm::lookAt(glm::dvec3(1e21, 2e20, 5e20), glm::dvec3(4e20, 2e20, -1e20),
+                                                 glm::dvec3(0, 1, 0)));
+    const glm::mat4 drawing_view = units.view_to_drawing(view);
+    for (const glm::vec3& p : mesh.positions) {
+        const glm::dvec4 camera = glm::dmat4(view) * glm::dvec4(glm::dvec3(p), 1.0);
+        const glm::vec4 drawn = drawing_view * glm::vec4(units.to_drawing(p), 1.0f);
+        for (int k = 0; k < 3; ++k) CHECK(double(drawn[k]) == Approx(camera[k] / units.scale).margin(1e-5));
+    }
+    // Ordinary sizes are left alone.
+    Mesh unit = mesh;
+    for (glm::vec3& p : unit.positions) p *= 1e-20f;
+    CHECK(drawing_units(unit).identity());
+}
