@@ -130,6 +130,8 @@ int run_render(int argc, char** argv) {
             if (drawing.crease_count() > 0)
                 std::printf("  %zu sharp edges (faces turning by more than %g degrees)\n", drawing.crease_count(),
                             drawing.crease_angle());
+            if (drawing.turned_inside_out())
+                std::printf("  the faces point inwards: drawn turned the right way round\n");
             if (s.detail > 0 && drawing.noise_floor() > 0)
                 std::printf("  scan noise: no detail finer than %.4g model units\n", drawing.noise_floor());
             std::printf("  %s (context + shaders %.3f s)\n", context->description().c_str(), context_s);

@@ -26,6 +26,8 @@ MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, con
     : settings_(settings), smoothing_(smoothing), progress_(progress) {
     units_ = drawing_units(input);
     to_drawing_units(input, units_);
+    turned_ = is_inside_out(input);
+    if (turned_) flip_faces(input);
     // Sharp edges split the mesh: each side gets its own normals and curvature.
     crease_angle_ = render::resolved_crease_angle(settings.crease_angle, input);
     const std::vector<glm::uvec2> creases = find_creases(input, crease_angle_);

@@ -8,6 +8,7 @@
 
 #include "geometry/creases.h"
 #include "geometry/drawing_units.h"
+#include "geometry/orientation.h"
 #include "geometry/surface_analysis.h"
 #include "render/camera.h"
 #include "render/detail_fields.h"
@@ -37,6 +38,8 @@ public:
     const Mesh& mesh() const { return drawn_.mesh; }
     const render::BoundingSphere& bounds() const { return bounds_; }
     const DrawingUnits& units() const { return units_; }
+    // Whether the input was inside out (geometry/orientation.h) and is drawn with its faces turned.
+    bool turned_inside_out() const { return turned_; }
     size_t crease_count() const { return drawn_.creases.size(); }
     float crease_angle() const { return crease_angle_; }
     const StageTimes& times() const { return times_; }
@@ -71,6 +74,7 @@ private:
     render::RenderSettings settings_;
     SmoothingOptions smoothing_;  // as given (model units)
     DrawingUnits units_;
+    bool turned_ = false;
     ProgressFn progress_;
     float crease_angle_ = 0;
     SplitMesh drawn_;

@@ -1,7 +1,8 @@
 // Meshes far from unit size (geometry/drawing_units.h) are drawn from a copy
 // of unit size: the same picture as the mesh at its own size, with cameras
 // given in model units converted; and the conversion of a view matrix keeps
-// every point where it was on screen.
+// every point where it was on screen. Meshes whose faces point inwards
+// (geometry/orientation.h) draw as the same mesh the right way round.
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
@@ -78,4 +79,28 @@ TEST_CASE("a view matrix converted to drawing units puts every point where it wa
     Mesh unit = mesh;
     for (glm::vec3& p : unit.positions) p *= 1e-20f;
     CHECK(drawing_units(unit).identity());
+}
+
+TEST_CASE("kappa render draws a mesh whose faces point inwards as it draws it the right way round", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    Mesh mesh = load_mesh(test::shared_mesh("fandisk.obj"));
+    std::string obj;
+    for (const glm::vec3& p : mesh.positions)
+        obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+    auto write = [&](const std::string& name, bool inwards) {
+        std::string text = obj;
+        for (const Face& f : mesh.faces) {
+            const Face g = inwards ? Face(f[0], f[2], f[1]) : f;
+            text += "f " + std::to_string(g[0] + 1) + " " + std::to_string(g[1] + 1) + " " + std::to_string(g[2] + 1) + "\n";
+        }
+        test::write_file(dir + "/" + name + ".obj", text);
+        const auto r = test::run_command(kappa_render(dir + "/" + name + ".obj -o " + dir + "/" + name +
+                                                      ".png --size 240x180 --lines contours,suggestive,creases"));
+        REQUIRE(r.exit_code == 0);
+        CHECK((r.output.find("faces point inwards") != std::string::npos) == inwards);
+        return render::read_png(dir + "/" + name + ".png");
+    };
+    const render::Image outward = write("outward", false), inward = write("inward", true);
+    CHECK(test::count_ink(outward) > 500);
+    CHECK(test::largest_difference(outward, inward) <= test::kScreenMergeTolerance);
 }
