@@ -21,14 +21,6 @@ namespace kappa::render {
 
 namespace {
 
-// A corner of a segment's quad (shaders/segment_quads_vert.glsl).
-struct QuadVertex {
-    glm::vec3 end0, end1;
-    glm::vec2 alpha;
-    float tolerance;
-    float kind_corner;  // 4 kind + corner
-};
-
 // The four corners of each segment of `lines` (merged on screen,
 // render/screen_merge.h), appended to `out`.
 void append_quads(const ExtractedLines& lines, const ScreenMergeParams& merge, std::vector<QuadVertex>& out) {
@@ -132,7 +124,7 @@ void CpuLinePass::ensure_indices(size_t quads) {
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(), GL_STATIC_DRAW);
 }
 
-void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
+CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) const {
     const LineSelection& l = s.lines;
     const Mesh& m = mesh.cpu_mesh();
     const SurfaceFields& fields = mesh.cpu_fields();
@@ -237,8 +229,15 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
         }
         append_quads(found, merge, block_vertices[i]);
     });
-    size_t total = 0;
-    for (const auto& v : block_vertices) total += v.size();
+    CpuLines lines;
+    lines.blocks = std::move(block_vertices);
+    for (const auto& v : lines.blocks) lines.vertex_count += v.size();
+    return lines;
+}
+
+void CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& s) {
+    const LineSelection& l = s.lines;
+    const size_t total = lines.vertex_count;
     if (total == 0) return;
     glBindVertexArray(vao_);
     ensure_indices(total / 4);
@@ -254,7 +253,7 @@ void CpuLinePass::draw(const MeshBuffers& mesh, const FrameParams& frame, const 
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(total * sizeof(QuadVertex)), nullptr, GL_STREAM_DRAW);
     GLintptr offset = 0;
-    for (const auto& v : block_vertices) {
+    for (const auto& v : lines.blocks) {
         if (v.empty()) continue;
         glBufferSubData(GL_ARRAY_BUFFER, offset, GLsizeiptr(v.size() * sizeof(QuadVertex)), v.data());
         offset += GLintptr(v.size() * sizeof(QuadVertex));

@@ -17,7 +17,27 @@
 #include "render/render_settings.h"
 #include "render/shader_program.h"
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <vector>
+
 namespace kappa::render {
+
+// A corner of a segment's quad (shaders/segment_quads_vert.glsl).
+struct QuadVertex {
+    glm::vec3 end0, end1;
+    glm::vec2 alpha;
+    float tolerance;
+    float kind_corner;  // 4 kind + corner
+};
+
+// One frame's lines, ready to draw: the quads' corners, block by block.
+struct CpuLines {
+    std::vector<std::vector<QuadVertex>> blocks;
+    size_t vertex_count = 0;
+};
 
 class CpuLinePass {
 public:
@@ -25,8 +45,12 @@ public:
     ~CpuLinePass();
     CpuLinePass(const CpuLinePass&) = delete;
     CpuLinePass& operator=(const CpuLinePass&) = delete;
+    // The lines of a frame, made on the CPU without the GL: may run on any
+    // thread while the GL draws the surface (the mesh's CPU copies are not
+    // changed during a frame).
+    CpuLines prepare(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings) const;
     // Into the bound framebuffer, with the line passes' blending and depth texture bound.
-    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+    void draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& settings);
 
 private:
     void ensure_indices(size_t quads);  // the index buffer holds two triangles for at least `quads` quads

@@ -52,6 +52,10 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
     p.set("u_hidden_lines", int(s.hidden_lines));
 }
 
+void LineRenderer::begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
+    pending_cpu_lines_ = std::async(std::launch::async, [this, &mesh, frame, s] { return cpu_lines_.prepare(mesh, frame, s); });
+}
+
 void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_lines,
                         GLuint surface_depth_texture) {
     glDisable(GL_DEPTH_TEST);
@@ -74,7 +78,9 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
     const bool highlights = s.lines.suggestive_highlights;
     if (cpu_lines) {
-        cpu_lines_.draw(mesh, frame, s);  // every kind drawn by the four passes below
+        // Every kind drawn by the four passes below.
+        const CpuLines lines = pending_cpu_lines_.valid() ? pending_cpu_lines_.get() : cpu_lines_.prepare(mesh, frame, s);
+        cpu_lines_.draw(lines, frame, s);
     } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
         // The variant that can also draw highlights and Dw kr lines only when they are on.
         ShaderProgram& p = highlights || s.lines.dwkr ? isolines_highlights_ : isolines_;

@@ -9,12 +9,20 @@
 #include "render/render_settings.h"
 #include "render/shader_program.h"
 
+#include <future>
+
 namespace kappa::render {
 
 class LineRenderer {
 public:
     LineRenderer();  // compiles the shaders (GL context current)
-    // cpu_lines: the lines of every kind but creases, boundaries and glyphs come from render/cpu_lines.h.
+    // Starts making this frame's lines on the CPU (render/cpu_lines.h) on
+    // another thread, so that they are made while the GL draws the surface
+    // (a software rasteriser transforms and bins the surface's triangles on
+    // the calling thread, leaving the other cores idle). draw() waits for them.
+    void begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+    // cpu_lines: the lines of every kind but creases, boundaries and glyphs come from render/cpu_lines.h
+    // (begun by begin_cpu_lines, or made here).
     void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
               GLuint surface_depth_texture);
 
@@ -24,6 +32,7 @@ private:
     ShaderProgram isolines_, isolines_highlights_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_,
         creases_;
     CpuLinePass cpu_lines_;
+    std::future<CpuLines> pending_cpu_lines_;
 };
 
 }  // namespace kappa::render

@@ -60,8 +60,12 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     FrameParams frame;
+    const bool cpu_lines = s.line_extraction == LineExtraction::Cpu ||
+                           (s.line_extraction == LineExtraction::Auto && software_gl_);
+    const bool any_lines = mesh_ && (s.lines.any() || s.vectors != 0);
     if (mesh_) {
         frame = FrameParams::make(camera, mesh_->bounds(), w, h);
+        if (any_lines && cpu_lines) line_pass_.begin_cpu_lines(*mesh_, frame, s);  // made while the surface is drawn
         surface_pass_.draw(*mesh_, frame, s);
     }
     if (s.msaa) resolve(surface_ms_fb_, surface_fb_);
@@ -73,10 +77,7 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     glBindFramebuffer(GL_FRAMEBUFFER, lines_fb_.id());
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    const bool cpu_lines = s.line_extraction == LineExtraction::Cpu ||
-                              (s.line_extraction == LineExtraction::Auto && software_gl_);
-    if (mesh_ && (s.lines.any() || s.vectors != 0))
-        line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture());
+    if (any_lines) line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture());
     stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
 
     // 3. Composite into the target, then the colour bar on top.
