@@ -48,13 +48,13 @@ double cpu_ms() {
 FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& camera, const render::RenderSettings& s,
                           const render::Framebuffer& target, int frames) {
     const int w = target.spec().width, h = target.spec().height;
-    renderer.render(camera, s, {target.id(), w, h});  // warm-up: shader compilation, buffer allocation
+    renderer.render_offscreen(camera, s, w, h);  // as kappa render draws  // warm-up: shader compilation, buffer allocation
     glFinish();
     std::vector<double> wall, cpu;
     for (int i = 0; i < frames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
         const double c0 = cpu_ms();
-        renderer.render(camera, s, {target.id(), w, h});
+        renderer.render_offscreen(camera, s, w, h);  // as kappa render draws
         glFinish();
         cpu.push_back(cpu_ms() - c0);
         wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());

@@ -46,8 +46,7 @@ void Renderer::ensure_buffers(int width, int height, bool msaa) {
     if (!lines_fb_.matches(width, height, 0)) lines_fb_ = Framebuffer({width, height, 0, GL_R8, false});
 }
 
-void Renderer::render(const Camera& camera, const RenderSettings& s, const RenderTarget& target) {
-    const int w = target.width, h = target.height;
+FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderSettings& s, int w, int h) {
     ensure_buffers(w, h, s.msaa);
     glViewport(0, 0, w, h);
 
@@ -80,12 +79,33 @@ void Renderer::render(const Camera& camera, const RenderSettings& s, const Rende
     if (any_lines) line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture());
     stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
 
+    return frame;
+}
+
+void Renderer::render(const Camera& camera, const RenderSettings& s, const RenderTarget& target) {
+    const int w = target.width, h = target.height;
+    draw_surface_and_lines(camera, s, w, h);
     // 3. Composite into the target, then the colour bar on top.
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     glViewport(0, 0, w, h);
     compositor_.draw(surface_fb_.color_texture(), lines_fb_.color_texture(), s.line_color);
     if (mesh_ && s.colorbar) colorbar_.draw(s.colormap, mesh_->map_range(s.colormap), w, h, s.background);
     glBindVertexArray(0);
+}
+
+void Renderer::render_offscreen(const Camera& camera, const RenderSettings& s, int w, int h) {
+    draw_surface_and_lines(camera, s, w, h);
+    // 3. The lines blended over the surface in its own framebuffer (no copy).
+    glBindFramebuffer(GL_FRAMEBUFFER, surface_fb_.id());
+    glViewport(0, 0, w, h);
+    compositor_.draw_over(lines_fb_.color_texture(), s.line_color);
+    if (mesh_ && s.colorbar) colorbar_.draw(s.colormap, mesh_->map_range(s.colormap), w, h, s.background);
+    glBindVertexArray(0);
+}
+
+Image Renderer::render_image(const Camera& camera, const RenderSettings& s, int w, int h) {
+    render_offscreen(camera, s, w, h);
+    return surface_fb_.read(s.background.a < 1.0f);
 }
 
 std::vector<Stroke> Renderer::hatch_strokes(const Camera& camera, const RenderSettings& s, int width, int height) {

@@ -51,6 +51,11 @@ public:
 
     // Draws one view into `target`. Without a mesh, clears to the background.
     void render(const Camera& camera, const RenderSettings& settings, const RenderTarget& target);
+    // The same view drawn offscreen, composited in the surface's own
+    // framebuffer (cheaper than render(): no copy of the surface), and as an
+    // image read back from there.
+    void render_offscreen(const Camera& camera, const RenderSettings& settings, int width, int height);
+    Image render_image(const Camera& camera, const RenderSettings& settings, int width, int height);
 
     // The hatching strokes of a view of width x height (settings.hatching;
     // none without a mesh): streamlines over the hatching field
@@ -60,6 +65,8 @@ public:
 
 private:
     void ensure_buffers(int width, int height, bool msaa);
+    // Steps 1 and 2 of a frame: the surface into surface_fb_, the lines' coverage into lines_fb_.
+    FrameParams draw_surface_and_lines(const Camera& camera, const RenderSettings& settings, int width, int height);
     std::vector<Stroke> hatch_strokes(const FrameParams& frame, const RenderSettings& settings);
 
     std::unique_ptr<MeshBuffers> mesh_;

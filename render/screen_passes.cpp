@@ -8,7 +8,8 @@
 namespace kappa::render {
 
 Compositor::Compositor()
-    : program_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"compose_frag.glsl"}}}) {
+    : program_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"compose_frag.glsl"}}}),
+      over_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"lines_over_frag.glsl"}}}) {
     glGenVertexArrays(1, &vao_);
 }
 
@@ -28,6 +29,21 @@ void Compositor::draw(GLuint surface_texture, GLuint lines_texture, glm::vec3 li
     glActiveTexture(GL_TEXTURE0);
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void Compositor::draw_over(GLuint lines_texture, glm::vec3 line_color) {
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    over_.use();
+    over_.set("u_lines", 0);
+    over_.set("u_line_color", line_color);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, lines_texture);
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
 }
 
 ColorBar::ColorBar()
