@@ -1,6 +1,7 @@
 // PDF output of a VectorDrawing (render/vector_drawing.h), through cairo.
 #include "render/vector_drawing.h"
 
+#include <cmath>
 #include <cairo-pdf.h>
 #include <cairo.h>
 
@@ -44,7 +45,23 @@ void write_pdf(const std::string& path, const VectorDrawing& d) {
                                   piece.opacity * (s.hidden ? 0.35 : 1.0));
             cairo_move_to(cr, piece.points[0].x, piece.points[0].y);
             for (size_t i = 1; i < piece.points.size(); ++i) cairo_line_to(cr, piece.points[i].x, piece.points[i].y);
+            if (piece.round_start && piece.round_end) {
+                cairo_stroke(cr);
+                continue;
+            }
+            // Butt ends where it joins its neighbours; its own round ends as half discs.
+            cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
             cairo_stroke(cr);
+            cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+            for (const bool at_start : {true, false}) {
+                if (!(at_start ? piece.round_start : piece.round_end)) continue;
+                const PieceCap c = piece_cap(piece, at_start);
+                const double out = std::atan2(double(c.outward.y), double(c.outward.x));
+                cairo_new_path(cr);
+                cairo_arc(cr, c.centre.x, c.centre.y, 0.5 * piece.width, out - M_PI / 2, out + M_PI / 2);
+                cairo_close_path(cr);
+                cairo_fill(cr);
+            }
         }
     };
     const double dash[] = {6.0, 4.0};

@@ -80,7 +80,22 @@ void write_svg(const std::string& path, const VectorDrawing& d) {
                 std::fprintf(f, "%s%.2f %.2f", i == 1 ? " L" : " ", double(piece.points[i].x), double(piece.points[i].y));
             if (piece.opacity < 1) std::fprintf(f, "\" stroke-opacity=\"%.4g", double(piece.opacity));
             if (piece.width != d.line_width) std::fprintf(f, "\" stroke-width=\"%.4g", double(piece.width));
-            std::fputs("\"/>\n", f);
+            if (piece.round_start && piece.round_end) {
+                std::fputs("\"/>\n", f);
+                continue;
+            }
+            // Butt ends where it joins its neighbours; its own round ends as half discs.
+            std::fputs("\" stroke-linecap=\"butt\"/>\n", f);
+            for (const bool at_start : {true, false}) {
+                if (!(at_start ? piece.round_start : piece.round_end)) continue;
+                const PieceCap c = piece_cap(piece, at_start);
+                const float r = 0.5f * piece.width;
+                std::fprintf(f, "<path d=\"M%.2f %.2f A%.4g %.4g 0 0 1 %.2f %.2f Z\" stroke=\"none\" fill=\"%s\"",
+                             double(c.right.x), double(c.right.y), double(r), double(r), double(c.left.x),
+                             double(c.left.y), hex_color(d.line_color).c_str());
+                if (piece.opacity < 1) std::fprintf(f, " fill-opacity=\"%.4g\"", double(piece.opacity));
+                std::fputs("/>\n", f);
+            }
         }
     };
     auto open_layer = [&](const char* name, const char* extra) {

@@ -68,7 +68,27 @@ std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing
     pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
                                 [](const StrokePiece& p) { return p.opacity <= 0 || p.width <= 0; }),
                  pieces.end());
+    for (size_t i = 1; i < pieces.size(); ++i)
+        if (pieces[i - 1].points.back() == pieces[i].points.front())
+            pieces[i - 1].round_end = pieces[i].round_start = false;
     return pieces;
+}
+
+PieceCap piece_cap(const StrokePiece& piece, bool at_start) {
+    const size_t n = piece.points.size();
+    const glm::vec2 end = at_start ? piece.points.front() : piece.points.back();
+    glm::vec2 out(1, 0);
+    // The direction of the last segment of non-zero length at that end.
+    for (size_t k = 1; k < n; ++k) {
+        const glm::vec2 d = at_start ? piece.points[k - 1] - piece.points[k] : piece.points[n - k] - piece.points[n - k - 1];
+        if (glm::dot(d, d) > 1e-12f) {
+            out = glm::normalize(d);
+            break;
+        }
+    }
+    const glm::vec2 across(-out.y, out.x);
+    const float r = 0.5f * piece.width;
+    return {end, out, end + across * r, end - across * r};
 }
 
 }  // namespace kappa::render

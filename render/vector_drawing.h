@@ -33,11 +33,24 @@ struct VectorDrawing {
 // the taper (tapered_width, render/stroke_pass.h: from 0.2 at a path's end to
 // 1 at `taper` pixels from it, the stroke's own taper or the drawing's; ends
 // are resampled every pixel there) times the strength when width_by_strength.
+// Where two pieces meet, neither has a round cap: round caps overlap there,
+// and two translucent caps over each other ink more than either (beads along
+// a fading line). Their ends are butt, and a piece's own round cap at a
+// stroke's end is drawn as a half disc beyond it (piece_cap).
 struct StrokePiece {
     std::vector<glm::vec2> points;
     float opacity = 1;
     float width = 1;  // pixels
+    bool round_start = true, round_end = true;  // false where it joins the piece before / after
 };
+
+// The half disc of diameter width beyond a piece's end (at_start: its first
+// point): the end point, the unit direction pointing out of the piece, and
+// the two corners (end +- half width across).
+struct PieceCap {
+    glm::vec2 centre, outward, left, right;
+};
+PieceCap piece_cap(const StrokePiece& piece, bool at_start);
 std::vector<StrokePiece> stroke_pieces(const Stroke& stroke, const VectorDrawing& drawing);
 
 // The order of the layers in a file: hatching at the bottom, then the line
