@@ -55,6 +55,7 @@ public:
     // framebuffer (cheaper than render(): no copy of the surface), and as an
     // image read back from there.
     void render_offscreen(const Camera& camera, const RenderSettings& settings, int width, int height);
+    GLuint offscreen_framebuffer() const { return surface_fb_.id(); }  // what render_offscreen drew into
     Image render_image(const Camera& camera, const RenderSettings& settings, int width, int height);
 
     // The hatching strokes of a view of width x height (settings.hatching;

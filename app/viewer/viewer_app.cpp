@@ -235,11 +235,9 @@ void ViewerApp::draw_frame() {
     const glm::ivec2 fb = window_->framebuffer_size();
     if (fb.x <= 0 || fb.y <= 0) return;  // minimised
 
-    // The drawing, exactly as `kappa render` draws it, then copied into the
-    // window right of the panel.
+    // The drawing, exactly as `kappa render` draws it (in the renderer's own
+    // framebuffer), then copied into the window right of the panel.
     const Area area = drawing_area();
-    if (!scene_.matches(area.pixels.x, area.pixels.y, 0))
-        scene_ = render::Framebuffer({area.pixels.x, area.pixels.y, 0, GL_RGBA8, false});
     // While the mouse moves the model and full-quality frames are slow
     // (software rendering), draw without multisampling; the still image
     // after the release is full quality again.
@@ -250,12 +248,12 @@ void ViewerApp::draw_frame() {
     if (reduced) settings.msaa = false;
     if (quick_frame_) redraw_frames_ = std::max(redraw_frames_, 1);
     quick_frame_ = false;
-    renderer_->render(camera(), settings, {scene_.id(), area.pixels.x, area.pixels.y});
+    renderer_->render_offscreen(camera(), settings, area.pixels.x, area.pixels.y);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glViewport(0, 0, fb.x, fb.y);
     glClearColor(0.1f, 0.1f, 0.1f, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_.id());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer_->offscreen_framebuffer());
     const int x0 = fb.x - area.pixels.x;
     glBlitFramebuffer(0, 0, area.pixels.x, area.pixels.y, x0, 0, fb.x, area.pixels.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 

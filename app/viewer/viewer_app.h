@@ -89,7 +89,6 @@ private:
     PanelState panel_;
     std::unique_ptr<render::WindowContext> window_;
     std::unique_ptr<render::Renderer> renderer_;
-    render::Framebuffer scene_;  // the drawing, copied into the window right of the panel
     BackgroundCompute compute_;
     std::optional<Model> model_;
     render::OrbitCamera orbit_;
