@@ -146,9 +146,7 @@ std::vector<Stroke> Renderer::hatch_strokes(const FrameParams& frame, const Rend
 
 Image render_to_image(Renderer& renderer, const Camera& camera, const RenderSettings& settings, int width,
                       int height) {
-    Framebuffer target({width, height, 0, GL_RGBA8, false});
-    renderer.render(camera, settings, {target.id(), width, height});
-    return target.read(settings.background.a < 1.0f);
+    return renderer.render_image(camera, settings, width, height);
 }
 
 }  // namespace kappa::render
