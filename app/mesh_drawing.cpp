@@ -1,5 +1,6 @@
 #include "mesh_drawing.h"
 
+#include "mesh_source.h"
 #include "render_options.h"
 
 #include "geometry/feature_size.h"
@@ -24,10 +25,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
                          const ProgressFn& progress)
     : settings_(settings), smoothing_(smoothing), progress_(progress) {
-    units_ = drawing_units(input);
-    to_drawing_units(input, units_);
-    turned_ = is_inside_out(input);
-    if (turned_) flip_faces(input);
+    const DrawingPreparation prepared = prepare_for_drawing(input);
+    units_ = prepared.units;
+    turned_ = prepared.turned_inside_out;
     // Sharp edges split the mesh: each side gets its own normals and curvature.
     crease_angle_ = render::resolved_crease_angle(settings.crease_angle, input);
     const std::vector<glm::uvec2> creases = find_creases(input, crease_angle_);

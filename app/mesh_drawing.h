@@ -8,7 +8,6 @@
 
 #include "geometry/creases.h"
 #include "geometry/drawing_units.h"
-#include "geometry/orientation.h"
 #include "geometry/surface_analysis.h"
 #include "render/camera.h"
 #include "render/detail_fields.h"

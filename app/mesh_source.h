@@ -2,6 +2,7 @@
 // when no path is given (conventions.md).
 #pragma once
 
+#include "geometry/drawing_units.h"
 #include "geometry/mesh.h"
 
 #include <string>
@@ -11,6 +12,15 @@ namespace kappa::app {
 // Loads `path` (throws kappa::MeshLoadError "PATH: problem"), or returns the
 // built-in model when `path` is empty.
 Mesh load_mesh_or_default(const std::string& path);
+
+// A mesh made ready to be drawn (render, batch, Python, viewer; not `kappa
+// curvature`): moved to drawing units (geometry/drawing_units.h) and, when
+// its faces point inwards (geometry/orientation.h), turned round.
+struct DrawingPreparation {
+    DrawingUnits units;
+    bool turned_inside_out = false;
+};
+DrawingPreparation prepare_for_drawing(Mesh& mesh);
 
 // "built-in model" or the path, for messages.
 std::string mesh_display_name(const std::string& path);

@@ -2,8 +2,6 @@
 
 #include "app/mesh_source.h"
 #include "geometry/creases.h"
-#include "geometry/drawing_units.h"
-#include "geometry/orientation.h"
 #include "geometry/feature_size.h"
 #include "geometry/view/default_view.h"
 #include "render/render_settings.h"
@@ -226,8 +224,7 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             set_stage("loading");
             const auto t = std::chrono::steady_clock::now();
             Mesh input = app::load_mesh_or_default(request.path);
-            to_drawing_units(input, drawing_units(input));  // meshes far from unit size (geometry/drawing_units.h)
-            if (is_inside_out(input)) flip_faces(input);    // geometry/orientation.h
+            app::prepare_for_drawing(input);
             m.input_vertices = input.vertex_count();
             const std::vector<glm::uvec2> creases =
                 find_creases(input, render::resolved_crease_angle(request.crease_angle, input));
