@@ -43,8 +43,8 @@ void main() {
     v_out.exterior_only = kind > 1.5 && u_silhouette_only != 0 ? 1.0 : 0.0;
     float w = max(clip0.w, clip1.w);
     v_out.tolerance = max(a_tolerance, kind > 0.5 ? u_scale_tolerance * w : 0.0);
-    if (clip0.w <= 0.0 || clip1.w <= 0.0 || max(a_alpha.x, a_alpha.y) <= 0.0) {
-        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // behind the eye or invisible: a degenerate quad outside the view
+    if (clip0.w <= 0.0 || clip1.w <= 0.0) {  // (segments without ink are never uploaded)
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // behind the eye: a degenerate quad outside the view
         v_out.segment = vec4(0.0), v_out.depth = vec2(0.0);
         return;
     }
