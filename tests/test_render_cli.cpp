@@ -16,12 +16,8 @@
 #include <filesystem>
 
 using namespace kappa;
+using test::kappa_render;
 
-namespace {
-
-std::string kappa_render(const std::string& args) { return std::string(KAPPA_EXE) + " render " + args; }
-
-}  // namespace
 
 TEST_CASE("kappa render writes a PNG of the requested size and says what it did", "[render][cli]") {
     const std::string dir = test::temp_dir(), out = dir + "/blob.png";

@@ -19,12 +19,8 @@
 #include <string>
 
 using namespace kappa;
+using test::kappa_render;
 
-namespace {
-
-std::string kappa_render(const std::string& args) { return std::string(KAPPA_EXE) + " render " + args; }
-
-}  // namespace
 
 TEST_CASE("kappa render draws a mesh scaled by 1e20 or 1e-20 as it draws the mesh itself", "[render][cli]") {
     // geometry/drawing_units.h: such meshes are drawn from a copy of unit size,

@@ -3,6 +3,8 @@
 // (conventions.md), and helpers that look at rendered images.
 #pragma once
 
+#include <string>
+
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
@@ -24,6 +26,9 @@ render::Renderer& renderer();
 SurfaceFields sphere_fields(const Mesh& mesh, float radius);
 SurfaceFields torus_fields(const Mesh& mesh, float major, float minor);
 SurfaceFields flat_fields(const Mesh& mesh);
+
+// The command line of `kappa render ARGS` (the executable this build made).
+inline std::string kappa_render(const std::string& args) { return std::string(KAPPA_EXE) + " render " + args; }
 
 // Settings that show only dark lines on white (conventions.md: tests find
 // lines as dark pixels), no MSAA, line width 2.

@@ -4,6 +4,7 @@
 // all ink of each within 2 px of the other's.
 #include <catch2/catch.hpp>
 
+#include "test_render_fixtures.h"
 #include "test_support.h"
 
 #include "render/ink_agreement.h"
@@ -12,10 +13,9 @@
 #include <string>
 
 using namespace kappa;
+using test::kappa_render;
 
 namespace {
-
-std::string kappa_render(const std::string& args) { return std::string(KAPPA_EXE) + " render " + args; }
 
 // Renders `mesh` (empty: the built-in model) as PNG and as `ext`, rasterises
 // the vector file with another program and returns both images.
