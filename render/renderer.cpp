@@ -82,17 +82,6 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     return frame;
 }
 
-void Renderer::render(const Camera& camera, const RenderSettings& s, const RenderTarget& target) {
-    const int w = target.width, h = target.height;
-    draw_surface_and_lines(camera, s, w, h);
-    // 3. Composite into the target, then the colour bar on top.
-    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    glViewport(0, 0, w, h);
-    compositor_.draw(surface_fb_.color_texture(), lines_fb_.color_texture(), s.line_color);
-    if (mesh_ && s.colorbar) colorbar_.draw(s.colormap, mesh_->map_range(s.colormap), w, h, s.background);
-    glBindVertexArray(0);
-}
-
 void Renderer::render_offscreen(const Camera& camera, const RenderSettings& s, int w, int h) {
     draw_surface_and_lines(camera, s, w, h);
     // 3. The lines blended over the surface in its own framebuffer (no copy).

@@ -22,11 +22,6 @@
 
 namespace kappa::render {
 
-struct RenderTarget {
-    GLuint framebuffer = 0;  // 0: the window's default framebuffer
-    int width = 0, height = 0;
-};
-
 class Renderer {
 public:
     Renderer();  // compiles every shader; needs a current GL 3.3 core context
@@ -49,11 +44,9 @@ public:
     // bottom row first): what the line passes test visibility against.
     std::vector<float> surface_depth() const { return surface_fb_.read_depth(); }
 
-    // Draws one view into `target`. Without a mesh, clears to the background.
-    void render(const Camera& camera, const RenderSettings& settings, const RenderTarget& target);
-    // The same view drawn offscreen, composited in the surface's own
-    // framebuffer (cheaper than render(): no copy of the surface), and as an
-    // image read back from there.
+    // Draws one view offscreen, the lines blended over the surface in its own
+    // framebuffer (offscreen_framebuffer(), to copy from); render_image also
+    // reads it back. Without a mesh, clears to the background.
     void render_offscreen(const Camera& camera, const RenderSettings& settings, int width, int height);
     GLuint offscreen_framebuffer() const { return surface_fb_.id(); }  // what render_offscreen drew into
     Image render_image(const Camera& camera, const RenderSettings& settings, int width, int height);

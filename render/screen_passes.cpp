@@ -8,37 +8,20 @@
 namespace kappa::render {
 
 Compositor::Compositor()
-    : program_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"compose_frag.glsl"}}}),
-      over_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"lines_over_frag.glsl"}}}) {
+    : program_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"lines_over_frag.glsl"}}}) {
     glGenVertexArrays(1, &vao_);
 }
 
 Compositor::~Compositor() { glDeleteVertexArrays(1, &vao_); }
-
-void Compositor::draw(GLuint surface_texture, GLuint lines_texture, glm::vec3 line_color) {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    program_.use();
-    program_.set("u_surface", 0);
-    program_.set("u_lines", 1);
-    program_.set("u_line_color", line_color);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, surface_texture);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, lines_texture);
-    glActiveTexture(GL_TEXTURE0);
-    glBindVertexArray(vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-}
 
 void Compositor::draw_over(GLuint lines_texture, glm::vec3 line_color) {
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    over_.use();
-    over_.set("u_lines", 0);
-    over_.set("u_line_color", line_color);
+    program_.use();
+    program_.set("u_lines", 0);
+    program_.set("u_line_color", line_color);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, lines_texture);
     glBindVertexArray(vao_);

@@ -1,5 +1,5 @@
-// Full-screen and overlay passes: compositing lines over the surface into
-// the target framebuffer, and the colour bar.
+// Full-screen and overlay passes: the lines over the surface, and the
+// colour bar.
 #pragma once
 
 #include "render/render_settings.h"
@@ -12,16 +12,12 @@ class Compositor {
 public:
     Compositor();
     ~Compositor();
-    // Draws surface * (1 - lines) + line_color * lines into the bound
-    // framebuffer (same size as the textures).
-    void draw(GLuint surface_texture, GLuint lines_texture, glm::vec3 line_color);
-    // The same, with the surface already in the bound framebuffer: blends the
-    // lines over it (cheaper: no surface read, nothing written without a line).
+    // Blends the lines over the surface in the bound framebuffer (same size
+    // as the texture): surface * (1 - lines) + line_color * lines.
     void draw_over(GLuint lines_texture, glm::vec3 line_color);
 
 private:
     ShaderProgram program_;
-    ShaderProgram over_;
     GLuint vao_ = 0;  // empty: the vertex shader makes the triangle
 };
 

@@ -1,7 +1,6 @@
-// Lines over the surface already in the bound framebuffer (blending
-// GL_ONE, GL_ONE_MINUS_SRC_ALPHA): the same result as compose_frag.glsl,
-// surface * (1 - lines) + line_color * lines, premultiplied, without
-// reading the surface or writing where there is no line.
+// Final pass: lines over the surface already in the bound framebuffer
+// (blending GL_ONE, GL_ONE_MINUS_SRC_ALPHA): surface * (1 - lines) +
+// line_color * lines, premultiplied, nothing written where there is no line.
 uniform sampler2D u_lines;  // line coverage
 uniform vec3 u_line_color;
 
