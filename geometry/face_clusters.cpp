@@ -7,12 +7,34 @@
 
 namespace kappa {
 
+namespace {
+
+// New -> old: vertices in order of first use by faces[order[0]], faces[order[1]], ..., then the unused ones.
+std::vector<uint32_t> vertex_order_of_use(const Mesh& mesh, const std::vector<uint32_t>& order) {
+    constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
+    std::vector<uint32_t> new_id(mesh.vertex_count(), none), out;
+    out.reserve(mesh.vertex_count());
+    for (uint32_t f : order)
+        for (int j = 0; j < 3; ++j) {
+            const uint32_t v = mesh.faces[f][j];
+            if (new_id[v] == none) new_id[v] = uint32_t(out.size()), out.push_back(v);
+        }
+    for (uint32_t v = 0; v < new_id.size(); ++v)
+        if (new_id[v] == none) out.push_back(v);
+    return out;
+}
+
+}  // namespace
+
 FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces) {
     constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
     const size_t nf = mesh.face_count();
     FaceClusters out;
     out.cluster_start.push_back(0);
-    if (nf == 0) return out;
+    if (nf == 0) {
+        out.vertex_order = vertex_order_of_use(mesh, out.face_order);
+        return out;
+    }
     max_faces = uint32_t(std::min<size_t>(std::max(max_faces, 1u), nf));
     out.face_order.resize(nf);
     out.cluster_start.reserve(nf / max_faces + 2);
@@ -78,6 +100,7 @@ FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces) {
             seed = uint32_t(cursor);
         }
     }
+    out.vertex_order = vertex_order_of_use(mesh, out.face_order);
     return out;
 }
 

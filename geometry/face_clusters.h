@@ -19,6 +19,11 @@ namespace kappa {
 
 struct FaceClusters {
     std::vector<uint32_t> face_order;  // permutation of 0..F-1: the faces cluster by cluster
+    // Permutation of 0..V-1, new -> old: the vertices in order of first use
+    // by the faces in face_order, then those no face uses. A renderer that
+    // stores its vertices in this order finds a run of faces' vertices close
+    // together in memory (the clusters reorder the faces, not the vertices).
+    std::vector<uint32_t> vertex_order;
     // Size clusters + 1; cluster c is face_order[cluster_start[c] .. cluster_start[c+1]).
     std::vector<uint32_t> cluster_start;
     size_t size() const { return cluster_start.empty() ? 0 : cluster_start.size() - 1; }
@@ -34,7 +39,7 @@ struct FaceClusters {
 // Input:  mesh (vertex indices must be < vertex_count(); any other defect is
 //         fine: isolated vertices, repeated indices, non-manifold edges),
 //         max_faces >= 1 (0 is treated as 1).
-// Output: every face in exactly one cluster; each cluster has 1..max_faces
+// Output: every face in exactly one cluster, and vertex_order; each cluster has 1..max_faces
 //         faces, all connected through shared vertices. An empty mesh gives
 //         zero clusters (cluster_start = {0}). Deterministic, O(V + F).
 FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces = 256);

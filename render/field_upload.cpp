@@ -24,11 +24,15 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
     FieldUpload u;
     u.feature_size = feature_size;
     for (size_t m = 0; m < u.ranges.size(); ++m) u.ranges[m] = robust_range(ColorMap(m), fields);
+    if (clusters.vertex_order.size() != n)
+        throw std::invalid_argument("MeshBuffers: face clusters of another mesh");
     u.vertices.resize(n);
-    for (size_t i = 0; i < n; ++i)
-        u.vertices[i] = {mesh.positions[i], fields.normals[i], fields.d1[i], fields.d2[i],
-                         {fields.k1[i], fields.k2[i]}, fields.dcurv[i], fields.unreliable(i) ? 1.0f : 0.0f,
-                         own_fine ? fine_normals[i] : fields.normals[i]};
+    for (size_t i = 0; i < n; ++i) {  // in the clusters' vertex order
+        const uint32_t v = clusters.vertex_order[i];
+        u.vertices[i] = {mesh.positions[v], fields.normals[v], fields.d1[v], fields.d2[v],
+                         {fields.k1[v], fields.k2[v]}, fields.dcurv[v], fields.unreliable(v) ? 1.0f : 0.0f,
+                         own_fine ? fine_normals[v] : fields.normals[v]};
+    }
     u.clusters = make_mesh_clusters(mesh, fields, clusters, feature_size, fine_normals);
     if (hatch_samples) {
         const SurfaceSamples seeds = sample_surface(mesh, fields, MeshBuffers::kHatchSamples);

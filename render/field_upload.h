@@ -31,7 +31,7 @@ struct GpuVertex {
 };
 
 struct FieldUpload {
-    std::vector<GpuVertex> vertices;
+    std::vector<GpuVertex> vertices;  // in FaceClusters::vertex_order
     MeshClusters clusters;
     std::array<float, 7> ranges{};  // robust colour-map range per ColorMap
     float feature_size = 1;
@@ -42,7 +42,7 @@ struct FieldUpload {
 
 // fields: one entry per vertex; fine_normals: empty (use fields.normals) or
 // one per vertex; clusters: the face clusters the triangles were uploaded
-// in; hatch_samples: also draw new hatching seeds (262144, slow on big meshes).
+// in (the vertex records come in its vertex_order); hatch_samples: also draw new hatching seeds (262144, slow on big meshes).
 // Throws std::invalid_argument when sizes do not match the mesh.
 FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                                  const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,

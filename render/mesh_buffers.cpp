@@ -51,17 +51,26 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(GpuVertex)), nullptr, GL_DYNAMIC_DRAW);
     set_vertex_attributes();
-    // Triangles in cluster order, so the contour pass can draw runs of them.
+    // Triangles in cluster order, so the contour pass can draw runs of them,
+    // and vertices in order of first use by those triangles, so a run's
+    // vertices lie close together (for the GL's vertex fetch and the CPU
+    // line pass alike).
     face_clusters_ = cluster_faces(mesh, kClusterFaces);
+    std::vector<uint32_t> new_id(vertex_count_);
+    for (uint32_t i = 0; i < vertex_count_; ++i) new_id[face_clusters_.vertex_order[i]] = i;
     std::vector<Face> ordered(mesh.faces.size());
-    for (size_t i = 0; i < ordered.size(); ++i) ordered[i] = mesh.faces[face_clusters_.face_order[i]];
+    for (size_t i = 0; i < ordered.size(); ++i) {
+        const Face& f = mesh.faces[face_clusters_.face_order[i]];
+        ordered[i] = {new_id[f[0]], new_id[f[1]], new_id[f[2]]};
+    }
     glGenBuffers(1, &triangle_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
     cpu_mesh_.faces = std::move(ordered);
 
     // Boundary edges share the vertex buffer through a second VAO.
-    const std::vector<glm::uvec2> edges = boundary_edges(mesh, fields.flags);
+    std::vector<glm::uvec2> edges = boundary_edges(mesh, fields.flags);
+    for (glm::uvec2& e : edges) e = {new_id[e.x], new_id[e.y]};
     boundary_edges_ = edges.size();
     glGenVertexArrays(1, &edge_vao_);
     glBindVertexArray(edge_vao_);

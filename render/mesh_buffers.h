@@ -35,8 +35,8 @@ public:
     void upload(FieldUpload&& prepared);
     const FaceClusters& face_clusters() const { return face_clusters_; }
     // A CPU copy of what the shaders read, for lines made on the CPU (strokes,
-    // the CPU isoline pass): the positions with the faces in the uploaded
-    // (cluster) order; the fields on the GPU now (normals, k1, k2, d1, d2,
+    // the CPU isoline pass): the positions and faces in the uploaded order
+    // (faces cluster by cluster, vertices in face_clusters().vertex_order); the fields on the GPU now (normals, k1, k2, d1, d2,
     // C, unreliable vertices as kFlagUnreliable); the pixel-scale contour normals.
     const Mesh& cpu_mesh() const { return cpu_mesh_; }
     const SurfaceFields& cpu_fields() const { return cpu_fields_; }

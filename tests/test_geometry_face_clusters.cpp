@@ -53,6 +53,17 @@ void check_partition(const Mesh& m, const FaceClusters& cl, uint32_t max_faces) 
         bad_sizes += n < 1 || n > max_faces;
     }
     CHECK(bad_sizes == 0);
+    // vertex_order: a permutation of the vertices, in order of first use by
+    // the faces in face_order, the unused ones last in increasing order.
+    REQUIRE(cl.vertex_order.size() == m.vertex_count());
+    std::vector<uint32_t> expected;
+    std::vector<uint8_t> seen(m.vertex_count(), 0);
+    for (uint32_t f : cl.face_order)
+        for (int j = 0; j < 3; ++j)
+            if (!seen[m.faces[f][j]]) seen[m.faces[f][j]] = 1, expected.push_back(m.faces[f][j]);
+    for (uint32_t v = 0; v < m.vertex_count(); ++v)
+        if (!seen[v]) expected.push_back(v);
+    CHECK(cl.vertex_order == expected);
 }
 
 // Number of clusters whose faces are not connected through shared vertices.
@@ -216,6 +227,17 @@ TEST_CASE("face clusters: empty mesh, max_faces 0, many components", "[geometry]
     const FaceClusters empty = cluster_faces(Mesh{});
     CHECK(empty.size() == 0);
     CHECK(empty.face_order.empty());
+    CHECK(empty.vertex_order.empty());
+    // Vertices no face uses come last, in their own order.
+    Mesh loose = make_icosphere(1.0f, 1);
+    loose.positions.insert(loose.positions.begin(), glm::vec3(5, 0, 0));
+    for (Face& f : loose.faces) f += glm::uvec3(1);
+    loose.positions.push_back(glm::vec3(6, 0, 0));
+    const FaceClusters with_loose = cluster_faces(loose, 16);
+    check_partition(loose, with_loose, 16);
+    REQUIRE(with_loose.vertex_order.size() == loose.vertex_count());
+    CHECK(with_loose.vertex_order[loose.vertex_count() - 2] == 0);
+    CHECK(with_loose.vertex_order.back() == loose.vertex_count() - 1);
     CHECK(compute_cluster_bounds(Mesh{}, {}, empty).empty());
 
     const Mesh tet = make_icosphere(1.0f, 0);

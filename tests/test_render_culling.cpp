@@ -133,3 +133,33 @@ TEST_CASE("cluster culling skips most of a sphere's triangles", "[render][cullin
     CHECK(drawn(false, true) == 0.0);
     CHECK(drawn(true, false) > 0.0);
 }
+
+// MeshBuffers stores the faces cluster by cluster and the vertices in their
+// order of first use (FaceClusters::vertex_order): its CPU copy, which the
+// CPU line pass and strokes read, must still be the same surface with the
+// same fields at every corner of every face.
+TEST_CASE("the uploaded mesh is the input's faces and fields, reordered", "[render][clusters]") {
+    Mesh mesh = make_torus(1.0f, 0.4f, 40, 20);
+    mesh.positions.push_back(glm::vec3(9, 9, 9));  // a vertex no face uses
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    test::renderer().set_mesh(mesh, fields, feature_size(mesh, fields));
+    const render::MeshBuffers& gpu = *test::renderer().mesh();
+    const FaceClusters& clusters = gpu.face_clusters();
+    const Mesh& copy = gpu.cpu_mesh();
+    REQUIRE(copy.face_count() == mesh.face_count());
+    REQUIRE(copy.vertex_count() == mesh.vertex_count());
+    size_t wrong_corners = 0, reordered = 0;
+    for (size_t i = 0; i < copy.face_count(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = copy.faces[i][k], original = mesh.faces[clusters.face_order[i]][k];
+            reordered += v != original;
+            wrong_corners += copy.positions[v] != mesh.positions[original] ||
+                             gpu.cpu_fields().k1[v] != fields.k1[original] ||
+                             gpu.cpu_fields().d1[v] != fields.d1[original] ||
+                             gpu.cpu_fields().dcurv[v] != fields.dcurv[original];
+        }
+    CHECK(wrong_corners == 0);
+    CHECK(reordered > 0);  // the torus's own numbering is not the order of first use
+    // Every vertex kept, the unused one too.
+    CHECK(copy.positions[clusters.vertex_order.size() - 1] == glm::vec3(9, 9, 9));
+}
