@@ -21,9 +21,32 @@ namespace kappa::render {
 
 namespace {
 
-// The four corners of each segment of `lines` (merged on screen,
-// render/screen_merge.h), appended to `out`.
-void append_quads(const ExtractedLines& lines, const ScreenMergeParams& merge, std::vector<QuadVertex>& out) {
+// A corner of a segment's quad (shaders/segment_quads_vert.glsl).
+struct QuadVertex {
+    glm::vec3 end0, end1;  // window coordinates
+    glm::vec2 alpha;
+    float tolerance;
+    float exterior_corner;  // 4 exterior_only + corner
+};
+
+// What segment_quads_vert.glsl needs of a segment: its window coordinates
+// and final occlusion tolerance.
+struct WindowParams {
+    glm::mat4 mvp;
+    glm::vec2 viewport;
+    float scale_tolerance;  // detail (px) x pixel size per unit of camera distance; 0 without detail
+    bool silhouette_only;   // contours only where they border the background
+};
+
+// Each segment of `lines`, merged on screen (render/screen_merge.h), in
+// window coordinates, appended to `out`; those with no ink, behind the eye
+// or beyond the depth range (the GL would clip their quad) left out.
+void append_segments(const ExtractedLines& lines, const ScreenMergeParams& merge, const WindowParams& w,
+                     std::vector<WindowSegment>& out) {
+    auto to_window = [&](glm::vec4 clip) {
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        return glm::vec3((glm::vec2(ndc) * 0.5f + 0.5f) * w.viewport, ndc.z * 0.5f + 0.5f);
+    };
     std::vector<LineSegment> merged;
     for (int type = 0; type < kLineTypeCount; ++type) {
         // As isolines_geom.glsl: 2 occluding contours, 1 the other zero sets of view-dependent fields.
@@ -32,8 +55,16 @@ void append_quads(const ExtractedLines& lines, const ScreenMergeParams& merge, s
         for (const Polyline& line : chain_segments(lines[size_t(type)])) merge_on_screen(line, merge, merged);
         for (const LineSegment& seg : merged) {
             if (std::max(seg.opacity_a, seg.opacity_b) <= 0.0f) continue;
-            for (int corner = 0; corner < 4; ++corner)
-                out.push_back({seg.a, seg.b, {seg.opacity_a, seg.opacity_b}, seg.tolerance, float(4 * kind + corner)});
+            const glm::vec4 clip0 = w.mvp * glm::vec4(seg.a, 1.0f), clip1 = w.mvp * glm::vec4(seg.b, 1.0f);
+            if (clip0.w <= 0.0f || clip1.w <= 0.0f) continue;
+            WindowSegment ws;
+            ws.a = to_window(clip0), ws.b = to_window(clip1);
+            const float z = std::min(ws.a.z, ws.b.z);  // the quad's depth
+            if (!(z >= 0.0f && z <= 1.0f)) continue;
+            ws.alpha = {seg.opacity_a, seg.opacity_b};
+            ws.tolerance = std::max(seg.tolerance, kind > 0 ? w.scale_tolerance * std::max(clip0.w, clip1.w) : 0.0f);
+            ws.exterior_only = kind == 2 && w.silhouette_only;
+            out.push_back(ws);
         }
     }
 }
@@ -96,7 +127,7 @@ CpuLinePass::CpuLinePass()
         GLint components;
         size_t offset;
     } attributes[] = {{3, offsetof(QuadVertex, end0)}, {3, offsetof(QuadVertex, end1)}, {2, offsetof(QuadVertex, alpha)},
-                      {1, offsetof(QuadVertex, tolerance)}, {1, offsetof(QuadVertex, kind_corner)}};
+                      {1, offsetof(QuadVertex, tolerance)}, {1, offsetof(QuadVertex, exterior_corner)}};
     for (GLuint i = 0; i < 5; ++i) {
         glEnableVertexAttribArray(i);
         glVertexAttribPointer(i, attributes[i].components, GL_FLOAT, GL_FALSE, stride,
@@ -209,7 +240,11 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     ScreenMergeParams merge;
     merge.mvp = frame.mvp, merge.viewport = frame.viewport;
     merge.depth_params = glm::vec2(frame.projection[2][2], frame.projection[3][2]);
-    std::vector<std::vector<QuadVertex>> block_vertices(blocks.size());
+    WindowParams window;
+    window.mvp = frame.mvp, window.viewport = frame.viewport;
+    window.scale_tolerance = s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y);
+    window.silhouette_only = l.silhouette && !l.contours;
+    std::vector<std::vector<WindowSegment>> block_segments(blocks.size());
     parallel_for_dynamic(blocks.size(), [&](size_t i) {
         thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
         for (auto& segments : found) segments.clear();
@@ -227,38 +262,56 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
                 if (families & kTopo) level_lines_of_face(m, face, level, topo, found);
             }
         }
-        append_quads(found, merge, block_vertices[i]);
+        append_segments(found, merge, window, block_segments[i]);
     });
     CpuLines lines;
-    lines.blocks = std::move(block_vertices);
-    for (const auto& v : lines.blocks) lines.vertex_count += v.size();
+    lines.blocks = std::move(block_segments);
+    for (const auto& b : lines.blocks) lines.segment_count += b.size();
     return lines;
 }
 
-void CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& s) {
-    const LineSelection& l = s.lines;
-    const size_t total = lines.vertex_count;
-    if (total == 0) return;
+void CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& s, GLuint depth_texture,
+                       GLuint coverage_texture) {
+    if (lines.segment_count == 0) return;
+    const int w = int(frame.viewport.x), h = int(frame.viewport.y);
+    if (coverage_texture != 0) {
+        // On the CPU: the surface's depth read back, the coverage written over the cleared target.
+        depth_.resize(size_t(w) * size_t(h));
+        glBindTexture(GL_TEXTURE_2D, depth_texture);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth_.data());
+        std::vector<WindowSegment> all;
+        all.reserve(lines.segment_count);
+        for (const auto& b : lines.blocks) all.insert(all.end(), b.begin(), b.end());
+        LineRasterParams p;
+        p.width = w, p.height = h, p.line_width = s.line_width, p.hidden_lines = s.hidden_lines;
+        p.depth_params = glm::vec2(frame.projection[2][2], frame.projection[3][2]);
+        coverage_.assign(size_t(w) * size_t(h), 0);
+        rasterize_lines(all, depth_, p, coverage_);
+        glBindTexture(GL_TEXTURE_2D, coverage_texture);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RED, GL_UNSIGNED_BYTE, coverage_.data());
+        glBindTexture(GL_TEXTURE_2D, depth_texture);
+        return;
+    }
+    // Through the GL: four corners a segment.
+    std::vector<QuadVertex> corners;
+    corners.reserve(4 * lines.segment_count);
+    for (const auto& b : lines.blocks)
+        for (const WindowSegment& seg : b)
+            for (int corner = 0; corner < 4; ++corner)
+                corners.push_back({seg.a, seg.b, seg.alpha, seg.tolerance, float(4 * int(seg.exterior_only) + corner)});
     glBindVertexArray(vao_);
-    ensure_indices(total / 4);
+    ensure_indices(lines.segment_count);
     program_.use();
-    program_.set("u_mvp", frame.mvp);
     program_.set("u_viewport", frame.viewport);
     program_.set("u_line_width", s.line_width);
     program_.set("u_depth", 0);
     program_.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
     program_.set("u_hidden_lines", int(s.hidden_lines));
-    program_.set("u_scale_tolerance", s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y));
-    program_.set("u_silhouette_only", int(l.silhouette && !l.contours));
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(total * sizeof(QuadVertex)), nullptr, GL_STREAM_DRAW);
-    GLintptr offset = 0;
-    for (const auto& v : lines.blocks) {
-        if (v.empty()) continue;
-        glBufferSubData(GL_ARRAY_BUFFER, offset, GLsizeiptr(v.size() * sizeof(QuadVertex)), v.data());
-        offset += GLintptr(v.size() * sizeof(QuadVertex));
-    }
-    glDrawElements(GL_TRIANGLES, GLsizei(total / 4 * 6), GL_UNSIGNED_INT, nullptr);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(QuadVertex)), corners.data(), GL_STREAM_DRAW);
+    glDrawElements(GL_TRIANGLES, GLsizei(lines.segment_count * 6), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }
 

@@ -3,16 +3,19 @@
 // valleys, parabolic and H = 0 lines, apparent ridges and principal
 // highlights, isophotes and topographic lines, per frame, from the
 // triangles of the clusters that can hold each kind
-// (render/cluster_culling.h), on all worker threads. Only the segments go
-// through the GL, each as a quad of two triangles
-// (shaders/segment_quads_vert.glsl, with no geometry shader), drawn and
-// occlusion-tested as the geometry-shader passes draw theirs. On software renderers (llvmpipe)
-// this is much faster than a geometry shader on every triangle, and draws
-// the same lines (tests/test_render_cpu_lines.cpp). Creases, boundaries and
-// glyphs keep their own (cheap) passes.
+// (render/cluster_culling.h), on all worker threads, as segments in window
+// coordinates. On software GL (llvmpipe) the segments are also drawn on the
+// CPU (render/line_raster.h) against the surface's depth read back;
+// otherwise each goes through the GL as a quad of two triangles
+// (shaders/segment_quads_vert.glsl, no geometry shader). Both draw and
+// occlusion-test them as the geometry-shader passes draw theirs
+// (tests/test_render_cpu_lines.cpp); on software GL this is much faster
+// than a geometry shader on every triangle. Creases, boundaries and glyphs
+// keep their own (cheap) passes.
 #pragma once
 
 #include "render/frame_params.h"
+#include "render/line_raster.h"
 #include "render/mesh_buffers.h"
 #include "render/render_settings.h"
 #include "render/shader_program.h"
@@ -25,18 +28,11 @@
 
 namespace kappa::render {
 
-// A corner of a segment's quad (shaders/segment_quads_vert.glsl).
-struct QuadVertex {
-    glm::vec3 end0, end1;
-    glm::vec2 alpha;
-    float tolerance;
-    float kind_corner;  // 4 kind + corner
-};
-
-// One frame's lines, ready to draw: the quads' corners, block by block.
+// One frame's lines, ready to draw: window-coordinate segments
+// (render/line_raster.h), block by block.
 struct CpuLines {
-    std::vector<std::vector<QuadVertex>> blocks;
-    size_t vertex_count = 0;
+    std::vector<std::vector<WindowSegment>> blocks;
+    size_t segment_count = 0;
 };
 
 class CpuLinePass {
@@ -49,8 +45,11 @@ public:
     // thread while the GL draws the surface (the mesh's CPU copies are not
     // changed during a frame).
     CpuLines prepare(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings) const;
-    // Into the bound framebuffer, with the line passes' blending and depth texture bound.
-    void draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& settings);
+    // Into the bound framebuffer, with the line passes' blending and depth
+    // texture bound. coverage_texture: 0, or the bound framebuffer's R8
+    // colour texture, still cleared, to rasterise on the CPU into instead.
+    void draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& settings, GLuint depth_texture,
+              GLuint coverage_texture);
 
 private:
     void ensure_indices(size_t quads);  // the index buffer holds two triangles for at least `quads` quads
@@ -58,6 +57,8 @@ private:
     ShaderProgram program_;
     unsigned vao_ = 0, buffer_ = 0, index_buffer_ = 0;
     size_t index_quads_ = 0;
+    std::vector<float> depth_;       // read back for the CPU raster, kept between frames
+    std::vector<uint8_t> coverage_;
 };
 
 }  // namespace kappa::render

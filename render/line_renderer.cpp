@@ -57,7 +57,7 @@ void LineRenderer::begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& f
 }
 
 void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_lines,
-                        GLuint surface_depth_texture) {
+                        GLuint surface_depth_texture, GLuint coverage_texture) {
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
@@ -80,7 +80,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     if (cpu_lines) {
         // Every kind drawn by the four passes below.
         const CpuLines lines = pending_cpu_lines_.valid() ? pending_cpu_lines_.get() : cpu_lines_.prepare(mesh, frame, s);
-        cpu_lines_.draw(lines, frame, s);
+        cpu_lines_.draw(lines, frame, s, surface_depth_texture, coverage_texture);
     } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
         // The variant that can also draw highlights and Dw kr lines only when they are on.
         ShaderProgram& p = highlights || s.lines.dwkr ? isolines_highlights_ : isolines_;

@@ -22,9 +22,11 @@ public:
     // the calling thread, leaving the other cores idle). draw() waits for them.
     void begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
     // cpu_lines: the lines of every kind but creases, boundaries and glyphs come from render/cpu_lines.h
-    // (begun by begin_cpu_lines, or made here).
+    // (begun by begin_cpu_lines, or made here). Into the bound framebuffer, cleared;
+    // coverage_texture: 0, or its R8 colour texture, for the CPU to draw
+    // those lines into itself (software GL, render/line_raster.h).
     void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
-              GLuint surface_depth_texture);
+              GLuint surface_depth_texture, GLuint coverage_texture = 0);
 
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,

@@ -15,6 +15,7 @@ Renderer::Renderer() {
     const std::string renderer = name ? name : "";
     software_gl_ = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
                    renderer.find("SwiftShader") != std::string::npos;
+    cpu_line_raster_ = software_gl_;
 }
 Renderer::~Renderer() = default;
 
@@ -76,7 +77,10 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     glBindFramebuffer(GL_FRAMEBUFFER, lines_fb_.id());
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (any_lines) line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture());
+    // On software GL the CPU draws its own lines too (render/line_raster.h).
+    if (any_lines)
+        line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture(),
+                        cpu_line_raster_ ? lines_fb_.color_texture() : 0);
     stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
 
     return frame;

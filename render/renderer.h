@@ -57,6 +57,12 @@ public:
     // Leaves GL_FRAMEBUFFER unbound.
     std::vector<Stroke> hatch_strokes(const Camera& camera, const RenderSettings& settings, int width, int height);
 
+    // Where the lines made on the CPU are drawn: on the CPU
+    // (render/line_raster.h; the default on software GL) or as GL quads (the
+    // default on GPUs). For tests and benchmarks, to compare the two.
+    void set_cpu_line_raster(bool on_cpu) { cpu_line_raster_ = on_cpu; }
+    bool cpu_line_raster() const { return cpu_line_raster_; }
+
 private:
     void ensure_buffers(int width, int height, bool msaa);
     // Steps 1 and 2 of a frame: the surface into surface_fb_, the lines' coverage into lines_fb_.
@@ -74,6 +80,7 @@ private:
     Framebuffer surface_fb_;     // colour + depth textures
     Framebuffer lines_fb_;
     bool software_gl_ = false;  // llvmpipe and the like: RenderSettings::line_extraction auto means CPU
+    bool cpu_line_raster_ = false;  // software_gl_ unless set_cpu_line_raster
 };
 
 // Headless convenience: renders into an offscreen RGBA8 framebuffer of

@@ -1,0 +1,128 @@
+#include "render/line_raster.h"
+
+#include "geometry/parallel.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kappa::render {
+
+namespace {
+
+constexpr int kBandRows = 16;
+
+float camera_distance(float window_depth, glm::vec2 dp) { return dp.y / (window_depth * 2.0f - 1.0f + dp.x); }
+
+// The quad segment_quads_vert.glsl draws for a segment: its centre line
+// extended by r at both ends, r to either side.
+struct Quad {
+    glm::vec2 a, dir, nrm;
+    float len, r;
+};
+
+Quad quad_of(const WindowSegment& s, float r) {
+    Quad q;
+    q.a = glm::vec2(s.a);
+    const glm::vec2 d = glm::vec2(s.b) - q.a;
+    q.len = glm::length(d);
+    q.dir = q.len > 1e-6f ? d / q.len : glm::vec2(1, 0);
+    q.nrm = glm::vec2(-q.dir.y, q.dir.x);
+    q.r = r;
+    return q;
+}
+
+// Narrows [lo, hi] to the x where lo_c <= u.(x, y) - u.a <= hi_c on row y.
+void clip_row(glm::vec2 u, glm::vec2 a, float lo_c, float hi_c, float y, float& lo, float& hi) {
+    const float base = glm::dot(u, a) - u.y * y;  // u.x x must lie in [lo_c + base, hi_c + base]
+    if (std::fabs(u.x) < 1e-12f) {
+        if (-base < lo_c || -base > hi_c) lo = 1, hi = 0;  // the row misses the slab
+        return;
+    }
+    float x0 = (lo_c + base) / u.x, x1 = (hi_c + base) / u.x;
+    if (x0 > x1) std::swap(x0, x1);
+    lo = std::max(lo, x0), hi = std::min(hi, x1);
+}
+
+// lines_frag.glsl for one pixel centre p (not on the surface): the coverage to max-blend, 0 for none.
+float pixel_ink(const WindowSegment& s, glm::vec2 p, const std::vector<float>& depth, const LineRasterParams& o) {
+    const glm::vec2 a(s.a), ab = glm::vec2(s.b) - a;
+    const float len2 = glm::dot(ab, ab);
+    const float t = len2 > 1e-12f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+    const glm::vec2 q = a + t * ab;
+    const float coverage = std::clamp(0.5f * o.line_width + 0.5f - glm::distance(p, q), 0.0f, 1.0f);
+    if (coverage <= 0.0f) return 0;
+    const glm::ivec2 size(o.width, o.height);
+    auto depth_at = [&](glm::ivec2 c) { return depth[size_t(c.y) * size_t(o.width) + size_t(c.x)]; };
+    auto texel = [&](glm::vec2 x) { return glm::clamp(glm::ivec2(glm::floor(x)), glm::ivec2(0), size - 1); };
+    if (s.exterior_only) {
+        const glm::vec2 side = len2 > 1e-12f ? glm::normalize(glm::vec2(-ab.y, ab.x)) : glm::vec2(1, 0);
+        const float reach = 0.5f * o.line_width + 2.0f;
+        if (depth_at(texel(q + side * reach)) < 1.0f && depth_at(texel(q - side * reach)) < 1.0f) return 0;
+    }
+    const glm::ivec2 qi = texel(q);
+    const float line_distance = camera_distance(s.a.z + (s.b.z - s.a.z) * t, o.depth_params);
+    const float centre = depth_at(qi);
+    float shade = 1.0f;
+    if (centre < 1.0f && line_distance > camera_distance(centre, o.depth_params) + s.tolerance) {
+        float farthest = centre;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                farthest = std::max(farthest, depth_at(glm::clamp(qi + glm::ivec2(dx, dy), glm::ivec2(0), size - 1)));
+        if (farthest < 1.0f && line_distance > camera_distance(farthest, o.depth_params) + s.tolerance) {
+            if (!o.hidden_lines || std::fmod(t * std::sqrt(len2), 10.0f) > 6.0f) return 0;
+            shade = 0.35f;
+        }
+    }
+    return shade * coverage * (s.alpha.x + (s.alpha.y - s.alpha.x) * t);
+}
+
+// The rows [first_row, end_row) of one segment's quad.
+void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::vector<float>& depth,
+               const LineRasterParams& o, uint8_t* coverage) {
+    const Quad q = quad_of(s, 0.5f * o.line_width + 0.5f);
+    for (int y = first_row; y < end_row; ++y) {
+        const float py = float(y) + 0.5f;
+        float lo = -1e30f, hi = 1e30f;
+        clip_row(q.nrm, q.a, -q.r, q.r, py, lo, hi);
+        clip_row(q.dir, q.a, -q.r, q.len + q.r, py, lo, hi);
+        if (!(lo <= hi)) continue;
+        const int x0 = std::max(0, int(std::ceil(lo - 0.5f))), x1 = std::min(o.width - 1, int(std::floor(hi - 0.5f)));
+        uint8_t* row = coverage + size_t(y) * size_t(o.width);
+        for (int x = x0; x <= x1; ++x) {
+            const float ink = pixel_ink(s, glm::vec2(float(x) + 0.5f, py), depth, o);
+            if (ink <= 0.0f) continue;
+            const uint8_t value = uint8_t(std::lrint(std::min(ink, 1.0f) * 255.0f));
+            row[x] = std::max(row[x], value);
+        }
+    }
+}
+
+}  // namespace
+
+void rasterize_lines(const std::vector<WindowSegment>& segments, const std::vector<float>& depth,
+                     const LineRasterParams& o, std::vector<uint8_t>& coverage) {
+    const size_t pixels = size_t(std::max(o.width, 0)) * size_t(std::max(o.height, 0));
+    if (coverage.size() != pixels) coverage.assign(pixels, 0);
+    if (pixels == 0 || depth.size() != pixels) return;
+    // Each segment's rows, and the segments of each band of rows.
+    const float r = 0.5f * o.line_width + 0.5f;
+    const int bands = (o.height + kBandRows - 1) / kBandRows;
+    std::vector<std::vector<uint32_t>> in_band(static_cast<size_t>(bands));
+    std::vector<glm::ivec2> rows(segments.size());
+    for (size_t i = 0; i < segments.size(); ++i) {
+        const WindowSegment& s = segments[i];
+        const float y_lo = std::min(s.a.y, s.b.y) - r, y_hi = std::max(s.a.y, s.b.y) + r;
+        if (!(y_hi >= 0.0f && y_lo <= float(o.height))) continue;  // also drops non-finite ends
+        rows[i] = {std::max(0, int(std::floor(y_lo))), std::min(o.height, int(std::ceil(y_hi)) + 1)};
+        for (int b = rows[i].x / kBandRows; b < bands && b * kBandRows < rows[i].y; ++b) in_band[size_t(b)].push_back(uint32_t(i));
+    }
+    parallel_for_dynamic(size_t(bands), [&](size_t b) {
+        const int band_lo = int(b) * kBandRows, band_hi = std::min(o.height, band_lo + kBandRows);
+        for (uint32_t i : in_band[b])
+            draw_rows(segments[i], std::max(band_lo, rows[i].x), std::min(band_hi, rows[i].y), depth, o, coverage.data());
+    });
+}
+
+}  // namespace kappa::render
