@@ -3,11 +3,11 @@
 // suggestive contours + hatching, on the default model and bunny-1M.ply;
 // and with every line type of --lines on (issue 12: at most 1.5x the
 // contours + suggestive frame), the ratio printed.
-//   bench_render [--size WxH] [--frames N] [--each] [--detail PX] [--only NAME] [MESH ...]   (default: built-in
+//   bench_render [--size WxH] [--frames N] [--each] [--detail PX] [--only NAME] [--no-msaa] [MESH ...]   (default: built-in
 //   model and ../shared/meshes/bunny-1M.ply next to the repository; --each: also every line type
 //   alone; --detail: the fields at that scale for the view, as kappa render draws by default,
 //   instead of the raw 1-ring fields; --only: Lambert and the configurations whose name contains NAME,
-//   e.g. to profile one)
+//   e.g. to profile one; --no-msaa: only the frames without multisampling)
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
@@ -68,13 +68,14 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
 
 int main(int argc, char** argv) {
     int width = 1024, height = 768, frames = 20;
-    bool each = false, rtsc = false;
+    bool each = false, rtsc = false, msaa = true;
     float detail = 0;
     std::string xf, only;
     std::vector<std::string> meshes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--each")) each = true;
         else if (!std::strcmp(argv[i], "--rtsc")) rtsc = true;
+        else if (!std::strcmp(argv[i], "--no-msaa")) msaa = false;
         else if (!std::strcmp(argv[i], "--xf") && i + 1 < argc) xf = argv[++i];
         else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!std::strcmp(argv[i], "--detail") && i + 1 < argc) detail = float(std::atof(argv[++i]));
@@ -132,7 +133,7 @@ int main(int argc, char** argv) {
         configs = kept;
     }
     for (auto& c : configs) c.settings.msaa = false;
-    auto with_msaa = configs;
+    auto with_msaa = msaa ? configs : std::vector<Config>{};
     for (auto& c : with_msaa) c.settings.msaa = true;
 
     render::Renderer renderer;
@@ -173,7 +174,7 @@ int main(int argc, char** argv) {
             }
             size_t every_row = 0;
             while (every_row < set->size() && std::string((*set)[every_row].name) != "lambert+every line type") ++every_row;
-            if (every_row < set->size())
+            if (every_row > 1 && every_row < set->size())
                 std::printf("  every line type / contours+suggestive: wall %.2fx, cpu %.2fx\n",
                         times[every_row].wall_ms / times[1].wall_ms, times[every_row].cpu_ms / times[1].cpu_ms);
         }

@@ -33,9 +33,15 @@ uint32_t band(float v, float first, float step, int count) {
     if (count <= 0 || !(step > 0)) return 0;
     if (count >= int(kAnyBand)) return kAnyBand;
     const float x = (v - first) / step;
-    const float nearest = std::round(x);
-    if (std::fabs(x - nearest) < 1e-3f && nearest >= 0 && nearest < float(count)) return kAnyBand;
-    return uint32_t(std::clamp(std::floor(x) + 1.0f, 0.0f, float(count)));
+    if (std::isnan(x)) return kAnyBand;  // always tested
+    if (x <= -1.0f) return 0;            // below every level
+    if (x >= float(count) + 1.0f) return uint32_t(count);
+    // floor(x) and the nearest integer by truncation, x > -1 here (no libm calls: this runs per vertex).
+    const int below = x < 0.0f ? -1 : int(x);
+    const float frac = x - float(below);
+    const int nearest = frac < 0.5f ? below : below + 1;
+    if (std::fabs(x - float(nearest)) < 1e-3f && nearest >= 0 && nearest < count) return kAnyBand;
+    return uint32_t(std::clamp(below + 1, 0, count));
 }
 
 bool bands_differ(uint32_t a, uint32_t b, uint32_t c, int shift) {
@@ -58,7 +64,7 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
     const float rv_limit = o.rv_threshold / o.feature_size;
     const float iso_step = 1.0f / float(std::max(1, o.isophote_count));
     parallel_for(n, [&](size_t v) {
-        uint32_t b = fields.unreliable(v) ? kUnreliable : 0;
+        uint32_t b = fields.unreliable(v) ? uint32_t(kUnreliable) : 0u;
         if (has_view) {
             if (view.contour_ndotv[v] > 0) b |= kContourFront;
             if (view.kr[v] > 0) b |= kKrPositive;

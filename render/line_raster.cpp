@@ -55,7 +55,10 @@ float pixel_ink(const WindowSegment& s, glm::vec2 p, const std::vector<float>& d
     if (coverage <= 0.0f) return 0;
     const glm::ivec2 size(o.width, o.height);
     auto depth_at = [&](glm::ivec2 c) { return depth[size_t(c.y) * size_t(o.width) + size_t(c.x)]; };
-    auto texel = [&](glm::vec2 x) { return glm::clamp(glm::ivec2(glm::floor(x)), glm::ivec2(0), size - 1); };
+    // The texel holding x, clamped to the image (floor by truncation of x >= 0: no libm call per pixel).
+    auto texel = [&](glm::vec2 x) {
+        return glm::ivec2(std::min(int(std::max(x.x, 0.0f)), size.x - 1), std::min(int(std::max(x.y, 0.0f)), size.y - 1));
+    };
     if (s.exterior_only) {
         const glm::vec2 side = len2 > 1e-12f ? glm::normalize(glm::vec2(-ab.y, ab.x)) : glm::vec2(1, 0);
         const float reach = 0.5f * o.line_width + 2.0f;
@@ -93,7 +96,7 @@ void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::ve
         for (int x = x0; x <= x1; ++x) {
             const float ink = pixel_ink(s, glm::vec2(float(x) + 0.5f, py), depth, o);
             if (ink <= 0.0f) continue;
-            const uint8_t value = uint8_t(std::lrint(std::min(ink, 1.0f) * 255.0f));
+            const uint8_t value = uint8_t(std::min(ink, 1.0f) * 255.0f + 0.5f);  // unorm8, rounded
             row[x] = std::max(row[x], value);
         }
     }
