@@ -15,14 +15,16 @@ using namespace lines;
 
 ViewCurvature view_curvature(float k1, float k2, glm::vec4 C, glm::vec3 n, glm::vec3 d1, glm::vec3 d2,
                              glm::vec3 to_eye) {
-    const float r = std::max(glm::length(to_eye), 1e-20f);
-    const glm::vec3 v = to_eye / r;
+    // Reciprocals once: this runs per vertex per frame, and without
+    // -ffast-math every division is a division.
+    const float r = std::max(glm::length(to_eye), 1e-20f), inv_r = 1.0f / r;
+    const glm::vec3 v = to_eye * inv_r;
     const float c = glm::dot(n, v);
-    const float abs_c = std::max(std::fabs(c), 1e-4f);
+    const float abs_c = std::max(std::fabs(c), 1e-4f), inv_abs_c = 1.0f / abs_c;
     const glm::vec2 vt(glm::dot(v, d1), glm::dot(v, d2));
-    const float s = std::max(glm::length(vt), 1e-6f);
-    const glm::vec2 w = vt / s;
-    const float sec_minus_1 = 1.0f / abs_c - 1.0f;
+    const float s = std::max(glm::length(vt), 1e-6f), inv_s = 1.0f / s;
+    const glm::vec2 w = vt * inv_s;
+    const float sec_minus_1 = inv_abs_c - 1.0f;
     const glm::mat2 S(k1, 0.0f, 0.0f, k2);
     const glm::mat2 M = glm::mat2(1.0f) + sec_minus_1 * glm::outerProduct(w, w);
     const glm::mat2 Q = S * M;
@@ -35,20 +37,21 @@ ViewCurvature view_curvature(float k1, float k2, glm::vec4 C, glm::vec3 n, glm::
     glm::vec2 e(A[1][1] - vc.q1, -A[1][0]);
     const glm::vec2 e2(-A[1][0], A[0][0] - vc.q1);
     if (glm::dot(e2, e2) > glm::dot(e, e)) e = e2;
-    vc.t1 = glm::dot(e, e) > 1e-30f ? glm::normalize(e) : glm::vec2(1, 0);
+    const float e_len2 = glm::dot(e, e);
+    vc.t1 = e_len2 > 1e-30f ? e * (1.0f / std::sqrt(e_len2)) : glm::vec2(1, 0);
 
     const glm::vec2 x = vc.t1;
     const glm::vec2 Sx = S * x;
     const float sign_c = c > 0 ? 1.0f : (c < 0 ? -1.0f : 0.0f);
-    const float dc = sign_c * (glm::dot(vt, Sx) + c * glm::dot(vt, x) / r);  // derivative of |cos(theta)|
-    const float dsec = -dc / (abs_c * abs_c);
-    const glm::vec2 dvt = -(x - glm::dot(x, vt) * vt) / r - c * Sx;
-    const glm::vec2 dw = (dvt - w * glm::dot(w, dvt)) / s;
+    const float dc = sign_c * (glm::dot(vt, Sx) + c * glm::dot(vt, x) * inv_r);  // derivative of |cos(theta)|
+    const float dsec = -dc * inv_abs_c * inv_abs_c;
+    const glm::vec2 dvt = -(x - glm::dot(x, vt) * vt) * inv_r - c * Sx;
+    const glm::vec2 dw = (dvt - w * glm::dot(w, dvt)) * inv_s;
     const glm::mat2 dM = dsec * glm::outerProduct(w, w) + sec_minus_1 * (glm::outerProduct(dw, w) + glm::outerProduct(w, dw));
     // C(x, ., .): C111 = a, C112 = b, C122 = c, C222 = d.
     const glm::mat2 dS(C.x * x.x + C.y * x.y, C.y * x.x + C.z * x.y, C.y * x.x + C.z * x.y, C.z * x.x + C.w * x.y);
     const glm::mat2 dQ = dS * M + S * dM;
-    vc.dq1 = 2.0f * glm::dot(Q * x, dQ * x) / abs_c;
+    vc.dq1 = 2.0f * glm::dot(Q * x, dQ * x) * inv_abs_c;
     return vc;
 }
 
@@ -165,7 +168,7 @@ std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const Surface
         v.kmax = first ? f.k1[i] : f.k2[i];
         const float kmin = first ? f.k2[i] : f.k1[i];
         v.dmax = first ? f.d1[i] : f.d2[i];
-        const glm::vec3 dir = glm::normalize(to_eye);
+        const glm::vec3 dir = to_eye * (1.0f / std::max(glm::length(to_eye), 1e-20f));
         v.v_dmax = glm::dot(dir, v.dmax);
         v.ph_strength = (v.kmax * v.kmax - kmin * kmin) * glm::dot(f.normals[i], dir) * fs * fs;
     });
