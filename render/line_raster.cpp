@@ -45,14 +45,33 @@ void clip_row(glm::vec2 u, glm::vec2 a, float lo_c, float hi_c, float y, float& 
     lo = std::max(lo, x0), hi = std::min(hi, x1);
 }
 
+// A segment's constants for lines_frag.glsl, computed once, not per pixel.
+struct Prepared {
+    glm::vec2 a, ab;
+    float len2, inv_len2, len;
+    float reach;  // w/2 + 1/2: no coverage farther from the centre line
+};
+
+Prepared prepare(const WindowSegment& s, const LineRasterParams& o) {
+    Prepared g;
+    g.a = glm::vec2(s.a), g.ab = glm::vec2(s.b) - g.a;
+    g.len2 = glm::dot(g.ab, g.ab);
+    g.inv_len2 = g.len2 > 1e-12f ? 1.0f / g.len2 : 0.0f;
+    g.len = std::sqrt(g.len2);
+    g.reach = 0.5f * o.line_width + 0.5f;
+    return g;
+}
+
 // lines_frag.glsl for one pixel centre p (not on the surface): the coverage to max-blend, 0 for none.
-float pixel_ink(const WindowSegment& s, glm::vec2 p, const std::vector<float>& depth, const LineRasterParams& o) {
-    const glm::vec2 a(s.a), ab = glm::vec2(s.b) - a;
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > 1e-12f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    const glm::vec2 q = a + t * ab;
-    const float coverage = std::clamp(0.5f * o.line_width + 0.5f - glm::distance(p, q), 0.0f, 1.0f);
-    if (coverage <= 0.0f) return 0;
+float pixel_ink(const WindowSegment& s, const Prepared& g, glm::vec2 p, const std::vector<float>& depth,
+                const LineRasterParams& o) {
+    const glm::vec2 pa = p - g.a;
+    const float t = std::clamp(glm::dot(pa, g.ab) * g.inv_len2, 0.0f, 1.0f);
+    const glm::vec2 from_q = pa - t * g.ab;  // p - q, q the closest point of the centre line
+    const float d2 = glm::dot(from_q, from_q);
+    if (d2 >= g.reach * g.reach) return 0;  // coverage reach - |p - q| <= 0
+    const float coverage = std::min(g.reach - std::sqrt(d2), 1.0f);
+    const glm::vec2 q = p - from_q;
     const glm::ivec2 size(o.width, o.height);
     auto depth_at = [&](glm::ivec2 c) { return depth[size_t(c.y) * size_t(o.width) + size_t(c.x)]; };
     // The texel holding x, clamped to the image (floor by truncation of x >= 0: no libm call per pixel).
@@ -60,7 +79,7 @@ float pixel_ink(const WindowSegment& s, glm::vec2 p, const std::vector<float>& d
         return glm::ivec2(std::min(int(std::max(x.x, 0.0f)), size.x - 1), std::min(int(std::max(x.y, 0.0f)), size.y - 1));
     };
     if (s.exterior_only) {
-        const glm::vec2 side = len2 > 1e-12f ? glm::normalize(glm::vec2(-ab.y, ab.x)) : glm::vec2(1, 0);
+        const glm::vec2 side = g.len2 > 1e-12f ? glm::vec2(-g.ab.y, g.ab.x) / g.len : glm::vec2(1, 0);
         const float reach = 0.5f * o.line_width + 2.0f;
         if (depth_at(texel(q + side * reach)) < 1.0f && depth_at(texel(q - side * reach)) < 1.0f) return 0;
     }
@@ -74,7 +93,7 @@ float pixel_ink(const WindowSegment& s, glm::vec2 p, const std::vector<float>& d
             for (int dx = -1; dx <= 1; ++dx)
                 farthest = std::max(farthest, depth_at(glm::clamp(qi + glm::ivec2(dx, dy), glm::ivec2(0), size - 1)));
         if (farthest < 1.0f && line_distance > camera_distance(farthest, o.depth_params) + s.tolerance) {
-            if (!o.hidden_lines || std::fmod(t * std::sqrt(len2), 10.0f) > 6.0f) return 0;
+            if (!o.hidden_lines || std::fmod(t * g.len, 10.0f) > 6.0f) return 0;
             shade = 0.35f;
         }
     }
@@ -85,6 +104,7 @@ float pixel_ink(const WindowSegment& s, glm::vec2 p, const std::vector<float>& d
 void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::vector<float>& depth,
                const LineRasterParams& o, uint8_t* coverage) {
     const Quad q = quad_of(s, 0.5f * o.line_width + 0.5f);
+    const Prepared g = prepare(s, o);
     for (int y = first_row; y < end_row; ++y) {
         const float py = float(y) + 0.5f;
         float lo = -1e30f, hi = 1e30f;
@@ -94,7 +114,7 @@ void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::ve
         const int x0 = std::max(0, int(std::ceil(lo - 0.5f))), x1 = std::min(o.width - 1, int(std::floor(hi - 0.5f)));
         uint8_t* row = coverage + size_t(y) * size_t(o.width);
         for (int x = x0; x <= x1; ++x) {
-            const float ink = pixel_ink(s, glm::vec2(float(x) + 0.5f, py), depth, o);
+            const float ink = pixel_ink(s, g, glm::vec2(float(x) + 0.5f, py), depth, o);
             if (ink <= 0.0f) continue;
             const uint8_t value = uint8_t(std::min(ink, 1.0f) * 255.0f + 0.5f);  // unorm8, rounded
             row[x] = std::max(row[x], value);
