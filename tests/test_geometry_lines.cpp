@@ -8,6 +8,8 @@
 #include "geometry/creases.h"
 #include "geometry/lines/chain.h"
 #include "geometry/lines/line_extraction.h"
+#include "geometry/lines/view_ridges.h"
+#include "geometry/parallel.h"
 #include "geometry/primitives.h"
 #include "geometry/surface_analysis.h"
 
@@ -15,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 using namespace kappa;
 
@@ -150,4 +153,43 @@ TEST_CASE("CPU curvature and level lines lie where the mathematics puts them", "
         CHECK(std::fabs(std::fmod(s.strength_a * 4.0f, 1.0f) - 0.5f) < 1e-4f);  // (k - 1/2) / 4
     }
     for (const LineSegment& s : levels[int(LineType::Topo)]) CHECK(std::fabs(s.a.y - s.strength_a) < 1e-5f);
+}
+
+// view_ridge_vertices computes four vertices at once where it can and the
+// rest one at a time (a thread's range need not be a multiple of four):
+// both must give the bits of view_curvature, one vertex at a time, so the
+// result never depends on how the vertices were split among threads.
+TEST_CASE("view_ridge_vertices: four at a time gives the bits of one at a time", "[lines]") {
+    const Mesh mesh = make_torus(1.0f, 0.35f, 37, 27);  // 999 vertices: ranges of any length
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    const glm::vec3 eye(2.5f, 1.5f, 3.0f);
+    const float fs = 0.3f;
+    std::vector<std::vector<ViewRidgeVertex>> runs;
+    for (unsigned threads : {1u, 2u, 3u, 7u}) {
+        set_thread_count(threads);
+        runs.push_back(view_ridge_vertices(mesh, fields, eye, fs));
+    }
+    set_thread_count(0);
+    for (size_t r = 1; r < runs.size(); ++r)
+        CHECK(std::memcmp(runs[0].data(), runs[r].data(), runs[0].size() * sizeof(ViewRidgeVertex)) == 0);
+    size_t differ = 0, strong = 0;
+    for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+        const ViewCurvature vc = view_curvature(fields.k1[i], fields.k2[i], fields.dcurv[i], fields.normals[i],
+                                                fields.d1[i], fields.d2[i], eye - mesh.positions[i]);
+        const ViewRidgeVertex& v = runs[0][i];
+        differ += v.view_curv != std::sqrt(std::max(vc.q1, 0.0f)) * fs || v.dq1 != vc.dq1 ||
+                  v.t1 != vc.t1.x * fields.d1[i] + vc.t1.y * fields.d2[i];
+        strong += v.view_curv > 0.3f;
+    }
+    CHECK(differ == 0);
+    CHECK(strong > 100);  // not all zero
+    // Only the vertices asked for; the others left zero.
+    std::vector<uint8_t> only(mesh.vertex_count(), 0);
+    for (size_t i = 0; i < only.size(); i += 5) only[i] = 1;
+    const std::vector<ViewRidgeVertex> some = view_ridge_vertices(mesh, fields, eye, fs, only);
+    size_t wrong = 0;
+    for (size_t i = 0; i < only.size(); ++i)
+        wrong += only[i] ? std::memcmp(&some[i], &runs[0][i], sizeof(ViewRidgeVertex)) != 0
+                         : some[i].view_curv != 0 || some[i].dq1 != 0 || some[i].kmax != 0;
+    CHECK(wrong == 0);
 }

@@ -8,50 +8,103 @@
 #include <glm/matrix.hpp>
 
 #include <cmath>
+#include <type_traits>
 
 namespace kappa {
 
 using namespace lines;
 
+namespace {
+
+// The view-dependent curvature written once for a scalar F = float and for
+// F = Lanes, four vertices at once (GCC vector extensions: SSE on x86-64,
+// lane-wise code elsewhere). Both run the same IEEE operations in the same
+// order, so a vertex gets the same bits whichever way it is computed.
+using Lanes = float __attribute__((vector_size(16)));
+
+inline float root(float x) { return std::sqrt(x); }
+inline Lanes root(Lanes x) {
+#ifdef __SSE__
+    return __builtin_ia32_sqrtps(x);
+#else
+    return Lanes{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
+#endif
+}
+template <typename F> F larger(F a, F b) { return a < b ? b : a; }  // std::max's order
+template <typename F> F magnitude(F x) { return x < 0.0f ? -x : x; }
+
+template <typename F>
+struct ViewCurvatureOf {
+    F q1, t1x, t1y, dq1;
+    F vx, vy, vz;  // the unit direction to the eye
+    F c;           // n.v
+};
+
+// k1, k2, C = (a, b, c, d), the normal n, principal directions d1, d2 and
+// the vector to the eye (tx, ty, tz); derivation in shaders/view_curvature.glsl.
+template <typename F>
+ViewCurvatureOf<F> view_curvature_of(F k1, F k2, F Ca, F Cb, F Cc, F Cd, F nx, F ny, F nz, F d1x, F d1y, F d1z, F d2x,
+                                     F d2y, F d2z, F tx, F ty, F tz) {
+    ViewCurvatureOf<F> o;
+    const F r = larger<F>(root(tx * tx + ty * ty + tz * tz), F{} + 1e-20f), inv_r = 1.0f / r;
+    o.vx = tx * inv_r, o.vy = ty * inv_r, o.vz = tz * inv_r;
+    const F c = nx * o.vx + ny * o.vy + nz * o.vz;
+    o.c = c;
+    const F abs_c = larger<F>(magnitude(c), F{} + 1e-4f), inv_abs_c = 1.0f / abs_c;
+    const F vt0 = o.vx * d1x + o.vy * d1y + o.vz * d1z, vt1 = o.vx * d2x + o.vy * d2y + o.vz * d2z;
+    const F s = larger<F>(root(vt0 * vt0 + vt1 * vt1), F{} + 1e-6f), inv_s = 1.0f / s;
+    const F w0 = vt0 * inv_s, w1 = vt1 * inv_s;
+    const F sec_minus_1 = inv_abs_c - 1.0f;
+    // M = I + (sec - 1) w w^T; Q = S M with S = diag(k1, k2): Q(r, c) = k_r M(r, c).
+    const F M00 = 1.0f + sec_minus_1 * w0 * w0, M01 = sec_minus_1 * w0 * w1, M11 = 1.0f + sec_minus_1 * w1 * w1;
+    const F Q00 = k1 * M00, Q01 = k1 * M01, Q10 = k2 * M01, Q11 = k2 * M11;
+    // A = Q^T Q (symmetric), its largest eigenvalue q1 and eigenvector t1.
+    const F A00 = Q00 * Q00 + Q10 * Q10, A01 = Q00 * Q01 + Q10 * Q11, A11 = Q01 * Q01 + Q11 * Q11;
+    const F mean = 0.5f * (A00 + A11);
+    const F half_gap = A11 - A00;
+    const F radius = root(A01 * A01 + 0.25f * half_gap * half_gap);
+    o.q1 = mean + radius;
+    const F ea0 = A11 - o.q1, ea1 = -A01, eb0 = -A01, eb1 = A00 - o.q1;
+    const auto use_b = eb0 * eb0 + eb1 * eb1 > ea0 * ea0 + ea1 * ea1;
+    const F e0 = use_b ? eb0 : ea0, e1 = use_b ? eb1 : ea1;
+    const F e_len2 = e0 * e0 + e1 * e1;
+    const auto has_e = e_len2 > 1e-30f;
+    const F inv_e = 1.0f / root(has_e ? e_len2 : F{} + 1.0f);
+    o.t1x = has_e ? e0 * inv_e : F{} + 1.0f;
+    o.t1y = has_e ? e1 * inv_e : F{};
+    // Its derivative along t1 (x below).
+    const F x0 = o.t1x, x1 = o.t1y;
+    const F Sx0 = k1 * x0, Sx1 = k2 * x1;
+    const F sign_c = c > 0.0f ? F{} + 1.0f : (c < 0.0f ? F{} - 1.0f : F{});
+    const F dc = sign_c * ((vt0 * Sx0 + vt1 * Sx1) + c * (vt0 * x0 + vt1 * x1) * inv_r);  // of |cos(theta)|
+    const F dsec = -dc * inv_abs_c * inv_abs_c;
+    const F x_vt = x0 * vt0 + x1 * vt1;
+    const F dvt0 = -(x0 - x_vt * vt0) * inv_r - c * Sx0, dvt1 = -(x1 - x_vt * vt1) * inv_r - c * Sx1;
+    const F w_dvt = w0 * dvt0 + w1 * dvt1;
+    const F dw0 = (dvt0 - w0 * w_dvt) * inv_s, dw1 = (dvt1 - w1 * w_dvt) * inv_s;
+    // dM = dsec w w^T + (sec - 1)(dw w^T + w dw^T)
+    const F dM00 = dsec * w0 * w0 + sec_minus_1 * (dw0 * w0 + w0 * dw0);
+    const F dM01 = dsec * w0 * w1 + sec_minus_1 * (dw0 * w1 + w0 * dw1);
+    const F dM11 = dsec * w1 * w1 + sec_minus_1 * (dw1 * w1 + w1 * dw1);
+    // dS = C(x, ., .): C111 = a, C112 = b, C122 = c, C222 = d.
+    const F dS00 = Ca * x0 + Cb * x1, dS01 = Cb * x0 + Cc * x1, dS11 = Cc * x0 + Cd * x1;
+    // dQ = dS M + S dM
+    const F dQ00 = dS00 * M00 + dS01 * M01 + k1 * dM00, dQ01 = dS00 * M01 + dS01 * M11 + k1 * dM01;
+    const F dQ10 = dS01 * M00 + dS11 * M01 + k2 * dM01, dQ11 = dS01 * M01 + dS11 * M11 + k2 * dM11;
+    const F Qx0 = Q00 * x0 + Q01 * x1, Qx1 = Q10 * x0 + Q11 * x1;
+    const F dQx0 = dQ00 * x0 + dQ01 * x1, dQx1 = dQ10 * x0 + dQ11 * x1;
+    o.dq1 = 2.0f * (Qx0 * dQx0 + Qx1 * dQx1) * inv_abs_c;
+    return o;
+}
+
+}  // namespace
+
 ViewCurvature view_curvature(float k1, float k2, glm::vec4 C, glm::vec3 n, glm::vec3 d1, glm::vec3 d2,
                              glm::vec3 to_eye) {
-    // Reciprocals once: this runs per vertex per frame, and without
-    // -ffast-math every division is a division.
-    const float r = std::max(glm::length(to_eye), 1e-20f), inv_r = 1.0f / r;
-    const glm::vec3 v = to_eye * inv_r;
-    const float c = glm::dot(n, v);
-    const float abs_c = std::max(std::fabs(c), 1e-4f), inv_abs_c = 1.0f / abs_c;
-    const glm::vec2 vt(glm::dot(v, d1), glm::dot(v, d2));
-    const float s = std::max(glm::length(vt), 1e-6f), inv_s = 1.0f / s;
-    const glm::vec2 w = vt * inv_s;
-    const float sec_minus_1 = inv_abs_c - 1.0f;
-    const glm::mat2 S(k1, 0.0f, 0.0f, k2);
-    const glm::mat2 M = glm::mat2(1.0f) + sec_minus_1 * glm::outerProduct(w, w);
-    const glm::mat2 Q = S * M;
-    const glm::mat2 A = glm::transpose(Q) * Q;
-    // Largest eigenvalue of the symmetric A and its eigenvector.
-    const float mean = 0.5f * (A[0][0] + A[1][1]);
-    const float radius = std::sqrt(A[1][0] * A[1][0] + 0.25f * (A[1][1] - A[0][0]) * (A[1][1] - A[0][0]));
+    const ViewCurvatureOf<float> o = view_curvature_of<float>(k1, k2, C.x, C.y, C.z, C.w, n.x, n.y, n.z, d1.x, d1.y,
+                                                               d1.z, d2.x, d2.y, d2.z, to_eye.x, to_eye.y, to_eye.z);
     ViewCurvature vc;
-    vc.q1 = mean + radius;
-    glm::vec2 e(A[1][1] - vc.q1, -A[1][0]);
-    const glm::vec2 e2(-A[1][0], A[0][0] - vc.q1);
-    if (glm::dot(e2, e2) > glm::dot(e, e)) e = e2;
-    const float e_len2 = glm::dot(e, e);
-    vc.t1 = e_len2 > 1e-30f ? e * (1.0f / std::sqrt(e_len2)) : glm::vec2(1, 0);
-
-    const glm::vec2 x = vc.t1;
-    const glm::vec2 Sx = S * x;
-    const float sign_c = c > 0 ? 1.0f : (c < 0 ? -1.0f : 0.0f);
-    const float dc = sign_c * (glm::dot(vt, Sx) + c * glm::dot(vt, x) * inv_r);  // derivative of |cos(theta)|
-    const float dsec = -dc * inv_abs_c * inv_abs_c;
-    const glm::vec2 dvt = -(x - glm::dot(x, vt) * vt) * inv_r - c * Sx;
-    const glm::vec2 dw = (dvt - w * glm::dot(w, dvt)) * inv_s;
-    const glm::mat2 dM = dsec * glm::outerProduct(w, w) + sec_minus_1 * (glm::outerProduct(dw, w) + glm::outerProduct(w, dw));
-    // C(x, ., .): C111 = a, C112 = b, C122 = c, C222 = d.
-    const glm::mat2 dS(C.x * x.x + C.y * x.y, C.y * x.x + C.z * x.y, C.y * x.x + C.z * x.y, C.z * x.x + C.w * x.y);
-    const glm::mat2 dQ = dS * M + S * dM;
-    vc.dq1 = 2.0f * glm::dot(Q * x, dQ * x) * inv_abs_c;
+    vc.q1 = o.q1, vc.t1 = {o.t1x, o.t1y}, vc.dq1 = o.dq1;
     return vc;
 }
 
@@ -155,22 +208,55 @@ std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const Surface
                                                  float fs, const std::vector<uint8_t>& only) {
     std::vector<ViewRidgeVertex> view(mesh.vertex_count());
     const bool all = only.size() != view.size();
-    parallel_for(view.size(), [&](size_t i) {
-        if (!all && !only[i]) return;
-        const glm::vec3 to_eye = eye - mesh.positions[i];
-        const ViewCurvature vc = view_curvature(f.k1[i], f.k2[i], f.dcurv[i], f.normals[i], f.d1[i], f.d2[i], to_eye);
+    auto needed = [&](size_t i) { return all || only[i] != 0; };
+    // Vertex i from lane j of the view-dependent curvature.
+    auto store = [&](size_t i, const auto& o, int j) {
+        auto lane = [j](auto x) -> float {
+            if constexpr (std::is_same_v<decltype(x), float>) return x;
+            else return x[j];
+        };
         ViewRidgeVertex& v = view[i];
-        v.view_curv = std::sqrt(std::max(vc.q1, 0.0f)) * fs;
-        v.t1 = vc.t1.x * f.d1[i] + vc.t1.y * f.d2[i];
-        v.dq1 = vc.dq1;
+        v.view_curv = std::sqrt(std::max(lane(o.q1), 0.0f)) * fs;
+        v.t1 = lane(o.t1x) * f.d1[i] + lane(o.t1y) * f.d2[i];
+        v.dq1 = lane(o.dq1);
         // rtsc's curv1 is the curvature of larger magnitude (trimesh2's order), not kappa's k1.
         const bool first = std::fabs(f.k1[i]) >= std::fabs(f.k2[i]);
         v.kmax = first ? f.k1[i] : f.k2[i];
         const float kmin = first ? f.k2[i] : f.k1[i];
         v.dmax = first ? f.d1[i] : f.d2[i];
-        const glm::vec3 dir = to_eye * (1.0f / std::max(glm::length(to_eye), 1e-20f));
+        const glm::vec3 dir(lane(o.vx), lane(o.vy), lane(o.vz));
         v.v_dmax = glm::dot(dir, v.dmax);
-        v.ph_strength = (v.kmax * v.kmax - kmin * kmin) * glm::dot(f.normals[i], dir) * fs * fs;
+        v.ph_strength = (v.kmax * v.kmax - kmin * kmin) * lane(o.c) * fs * fs;
+    };
+    parallel_for_ranges(view.size(), [&](size_t begin, size_t end) {
+        size_t i = begin;
+        for (; i + 4 <= end; i += 4) {  // four at once
+            if (!needed(i) && !needed(i + 1) && !needed(i + 2) && !needed(i + 3)) continue;
+            auto gather = [&](auto get) { return Lanes{get(i), get(i + 1), get(i + 2), get(i + 3)}; };
+            const auto o = view_curvature_of<Lanes>(
+                gather([&](size_t k) { return f.k1[k]; }), gather([&](size_t k) { return f.k2[k]; }),
+                gather([&](size_t k) { return f.dcurv[k].x; }), gather([&](size_t k) { return f.dcurv[k].y; }),
+                gather([&](size_t k) { return f.dcurv[k].z; }), gather([&](size_t k) { return f.dcurv[k].w; }),
+                gather([&](size_t k) { return f.normals[k].x; }), gather([&](size_t k) { return f.normals[k].y; }),
+                gather([&](size_t k) { return f.normals[k].z; }), gather([&](size_t k) { return f.d1[k].x; }),
+                gather([&](size_t k) { return f.d1[k].y; }), gather([&](size_t k) { return f.d1[k].z; }),
+                gather([&](size_t k) { return f.d2[k].x; }), gather([&](size_t k) { return f.d2[k].y; }),
+                gather([&](size_t k) { return f.d2[k].z; }), gather([&](size_t k) { return eye.x - mesh.positions[k].x; }),
+                gather([&](size_t k) { return eye.y - mesh.positions[k].y; }),
+                gather([&](size_t k) { return eye.z - mesh.positions[k].z; }));
+            for (int j = 0; j < 4; ++j)
+                if (needed(i + size_t(j))) store(i + size_t(j), o, j);
+        }
+        for (; i < end; ++i) {  // the rest one by one, with the same arithmetic
+            if (!needed(i)) continue;
+            const glm::vec3 t = eye - mesh.positions[i];
+            const glm::vec4 C = f.dcurv[i];
+            const glm::vec3 n = f.normals[i], d1 = f.d1[i], d2 = f.d2[i];
+            store(i,
+                  view_curvature_of<float>(f.k1[i], f.k2[i], C.x, C.y, C.z, C.w, n.x, n.y, n.z, d1.x, d1.y, d1.z, d2.x,
+                                           d2.y, d2.z, t.x, t.y, t.z),
+                  0);
+        }
     });
     return view;
 }
