@@ -7,8 +7,11 @@
 
 namespace kappa {
 
-bool is_inside_out(const Mesh& mesh) {
-    if (mesh.positions.empty() || mesh.faces.empty()) return false;
+namespace {
+
+// Six times the signed and unsigned volumes of the tetrahedra (centroid, face).
+std::pair<double, double> volumes(const Mesh& mesh) {
+    if (mesh.positions.empty() || mesh.faces.empty()) return {0, 0};
     glm::dvec3 centroid(0.0);
     for (const glm::vec3& p : mesh.positions) centroid += glm::dvec3(p);
     centroid /= double(mesh.positions.size());
@@ -22,7 +25,19 @@ bool is_inside_out(const Mesh& mesh) {
         signed_sum += v;
         unsigned_sum += std::fabs(v);
     }
+    return {signed_sum, unsigned_sum};
+}
+
+}  // namespace
+
+bool is_inside_out(const Mesh& mesh) {
+    const auto [signed_sum, unsigned_sum] = volumes(mesh);
     return unsigned_sum > 0 && signed_sum < -0.5 * unsigned_sum;
+}
+
+bool is_outside_out(const Mesh& mesh) {
+    const auto [signed_sum, unsigned_sum] = volumes(mesh);
+    return unsigned_sum > 0 && signed_sum > 0.5 * unsigned_sum;
 }
 
 void flip_faces(Mesh& mesh) {

@@ -16,6 +16,9 @@
 namespace kappa {
 
 bool is_inside_out(const Mesh& mesh);
+// The reverse test: normals clearly pointing outside (signed volume
+// positive and at least half the unsigned sum).
+bool is_outside_out(const Mesh& mesh);
 // Reverses every face's winding (normals turn round).
 void flip_faces(Mesh& mesh);
 

@@ -44,6 +44,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
                          const std::vector<glm::vec3>& fine_normals)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
     bounds_ = bounding_sphere(mesh);
+    back_faces_ = back_face_visibility(mesh);
 
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);

@@ -5,6 +5,7 @@
 // is computed from these in the shaders, per frame.
 #pragma once
 
+#include "geometry/back_faces.h"
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
@@ -71,6 +72,8 @@ public:
     double surface_area() const { return surface_area_; }
     float feature_size() const { return feature_size_; }
     const BoundingSphere& bounds() const { return bounds_; }
+    // Whether back faces may be culled, and the holes to draw them in (geometry/back_faces.h).
+    const BackFaceVisibility& back_faces() const { return back_faces_; }
     // The faces are uploaded cluster by cluster (render/cluster_culling.h).
     const MeshClusters& clusters() const { return clusters_; }
     // Robust colour-map range (render/colormap.h), computed at upload.
@@ -88,6 +91,7 @@ private:
     double surface_area_ = 0;
     float feature_size_ = 1;
     BoundingSphere bounds_;
+    BackFaceVisibility back_faces_;
     FaceClusters face_clusters_;
     MeshClusters clusters_;
     std::array<float, 7> ranges_{};

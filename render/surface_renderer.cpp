@@ -1,5 +1,6 @@
 #include "render/surface_renderer.h"
 
+#include "render/back_face_culling.h"
 
 namespace kappa::render {
 
@@ -7,22 +8,46 @@ SurfaceRenderer::SurfaceRenderer()
     : program_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "colormap.glsl", "surface_vert.glsl"}},
                 {GL_FRAGMENT_SHADER, {"colormap.glsl", "surface_frag.glsl"}}}),
       plain_({{GL_VERTEX_SHADER, {"surface_plain_vert.glsl"}},
-              {GL_FRAGMENT_SHADER, {"colormap.glsl", "surface_frag.glsl"}}}) {}
+              {GL_FRAGMENT_SHADER, {"colormap.glsl", "surface_frag.glsl"}}}),
+      paper_({{GL_VERTEX_SHADER, {"surface_paper_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"surface_paper_frag.glsl"}}}) {}
 
 void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
-    ShaderProgram& p = s.colormap == ColorMap::None ? plain_ : program_;
-    p.use();
-    p.set("u_mvp", frame.mvp);
-    p.set("u_normal_matrix", frame.normal_matrix);
-    p.set("u_shading", int(s.shading));
-    p.set("u_light", camera_light_direction(s, frame));
-    p.set("u_colormap", int(s.colormap));
-    p.set("u_map_range", mesh.map_range(s.colormap));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
+    ShaderProgram& p = s.shading == Shading::None && s.colormap == ColorMap::None ? paper_  // depth is all that varies
+                       : s.colormap == ColorMap::None                             ? plain_
+                                                                                  : program_;
+    p.use();
+    p.set("u_mvp", frame.mvp);
+    if (&p != &paper_) {
+        p.set("u_normal_matrix", frame.normal_matrix);
+        p.set("u_shading", int(s.shading));
+        p.set("u_light", camera_light_direction(s, frame));
+        p.set("u_colormap", int(s.colormap));
+        p.set("u_map_range", mesh.map_range(s.colormap));
+    }
+    const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
+    if (!culling.cull || !back_face_culling_) {
+        mesh.draw_triangles();
+        return;
+    }
+    // Front faces everywhere, back faces only where a hole is seen (geometry/back_faces.h).
+    glEnable(GL_CULL_FACE);
+    glFrontFace(culling.mirrored ? GL_CW : GL_CCW);
+    glCullFace(GL_BACK);
     mesh.draw_triangles();
+    if (!culling.back_runs.empty()) {
+        glCullFace(GL_FRONT);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(culling.holes.x, culling.holes.y, culling.holes.z, culling.holes.w);
+        mesh.draw_triangles(culling.back_runs);
+        glDisable(GL_SCISSOR_TEST);
+    }
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    glDisable(GL_CULL_FACE);
 }
 
 }  // namespace kappa::render

@@ -1,5 +1,5 @@
 // Surface pass: fills colour and depth with the shaded surface (paper,
-// Lambert or toon; colour maps).
+// Lambert, toon, hemisphere, Gooch; colour maps).
 #pragma once
 
 #include "render/frame_params.h"
@@ -13,11 +13,15 @@ class SurfaceRenderer {
 public:
     SurfaceRenderer();  // compiles the shaders (GL context current)
     // Draws into the bound framebuffer with depth testing.
+    // Back faces are culled where none can be seen (render/back_face_culling.h).
     void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+    void set_back_face_culling(bool on) { back_face_culling_ = on; }  // for tests: off draws every face
 
 private:
     ShaderProgram program_;
     ShaderProgram plain_;  // without a colour map: reads only positions and normals
+    ShaderProgram paper_;  // white paper, no colour map: positions only, nothing to interpolate
+    bool back_face_culling_ = true;
 };
 
 }  // namespace kappa::render

@@ -5,6 +5,7 @@
 
 #include "test_support.h"
 
+#include "geometry/back_faces.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/normals.h"
 #include "geometry/orientation.h"
@@ -43,4 +44,44 @@ TEST_CASE("flipping faces turns every vertex normal round", "[geometry][orientat
     const std::vector<glm::vec3> after = normals(sphere);
     REQUIRE(before.size() == after.size());
     for (size_t v = 0; v < before.size(); ++v) CHECK(glm::dot(before[v], after[v]) == Approx(-1.0f).margin(1e-5));
+}
+
+// Back faces may be culled (geometry/back_faces.h) only on consistently
+// wound, manifold, outward surfaces; the holes are the boundary components.
+TEST_CASE("back faces: cullable surfaces and their holes", "[geometry][orientation]") {
+    const Mesh torus = make_torus(1.0f, 0.3f, 48, 24);
+    const BackFaceVisibility closed = back_face_visibility(torus);
+    CHECK(closed.cullable);
+    CHECK(closed.holes.empty());
+    // The bunny scan: holes in its base, each listed with its boundary vertices.
+    const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));
+    const BackFaceVisibility scan = back_face_visibility(bunny);
+    CHECK(scan.cullable);
+    CHECK(scan.holes.size() >= 2);
+    size_t hole_vertices = 0;
+    for (const auto& h : scan.holes) hole_vertices += h.size();
+    CHECK(hole_vertices >= 3 * scan.holes.size());
+    // A sphere with two faces removed far apart: two holes of three vertices.
+    Mesh open = make_icosphere(1.0f, 2);
+    open.faces.erase(open.faces.begin() + 200);
+    open.faces.erase(open.faces.begin());
+    const BackFaceVisibility two = back_face_visibility(open);
+    CHECK(two.cullable);
+    REQUIRE(two.holes.size() == 2);
+    CHECK(two.holes[0].size() == 3);
+    CHECK(two.holes[1].size() == 3);
+    // Not cullable: inside out, one face wound the other way, an edge of three faces, an open sheet.
+    Mesh inward = torus;
+    flip_faces(inward);
+    CHECK(!back_face_visibility(inward).cullable);
+    Mesh one_flipped = torus;
+    std::swap(one_flipped.faces[10][1], one_flipped.faces[10][2]);
+    CHECK(!back_face_visibility(one_flipped).cullable);
+    Mesh fin = torus;
+    const Face f0 = fin.faces[0];
+    fin.positions.push_back(glm::vec3(5, 5, 5));
+    fin.faces.push_back({f0[1], f0[0], uint32_t(fin.positions.size() - 1)});
+    CHECK(!back_face_visibility(fin).cullable);
+    CHECK(!back_face_visibility(make_grid(2.0f, 10)).cullable);
+    CHECK(!back_face_visibility(Mesh{}).cullable);
 }

@@ -1,0 +1,85 @@
+#include "render/back_face_culling.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kappa::render {
+
+namespace {
+
+// A rectangle (pixels: x0, y0, x1, y1) holding the image of the sphere (c, r),
+// or the whole viewport when it reaches the eye's plane. In view space a
+// point p of the sphere has |p.x/d' - c.x/d| <= r (1 + |c.x|/d) / (d - r),
+// d = -c.z its depth, d' >= d - r that of p; likewise y.
+glm::vec4 sphere_rect(glm::vec3 center, float r, const FrameParams& frame) {
+    const glm::vec3 c = glm::vec3(frame.model_view * glm::vec4(center, 1.0f));
+    const float d = -c.z;
+    if (!(d - r > 0.0f)) return {0, 0, frame.viewport.x, frame.viewport.y};
+    const glm::vec2 scale(frame.projection[0][0], frame.projection[1][1]);  // symmetric perspective
+    const glm::vec2 at = glm::vec2(c) / d;
+    const glm::vec2 reach = r * (1.0f + glm::abs(at)) / (d - r);
+    const glm::vec2 lo = ((at - reach) * scale * 0.5f + 0.5f) * frame.viewport;
+    const glm::vec2 hi = ((at + reach) * scale * 0.5f + 0.5f) * frame.viewport;
+    return {lo.x, lo.y, hi.x, hi.y};
+}
+
+bool overlaps(glm::vec4 a, glm::ivec4 b) {
+    return a.x <= float(b.x + b.z) && a.z >= float(b.x) && a.y <= float(b.y + b.w) && a.w >= float(b.y);
+}
+
+}  // namespace
+
+BackFaceCulling back_face_culling(const BackFaceVisibility& visibility, const BoundingSphere& bounds,
+                                  const MeshClusters& clusters, const FrameParams& frame) {
+    BackFaceCulling out;
+    if (!visibility.cullable || !(glm::distance(frame.eye, bounds.center) > bounds.radius * 1.001f)) return out;
+    const int width = int(frame.viewport.x), height = int(frame.viewport.y);
+    double covered = 0;  // by the holes' rectangles (overlaps counted twice: only a guide)
+    for (const std::vector<glm::vec3>& hole : visibility.holes) {
+        glm::vec2 lo(1e30f), hi(-1e30f);
+        bool behind = false;
+        for (const glm::vec3& p : hole) {
+            const glm::vec4 c = frame.mvp * glm::vec4(p, 1.0f);
+            if (!(c.w > 0.0f)) {
+                behind = true;
+                break;
+            }
+            const glm::vec2 window = (glm::vec2(c) / c.w * 0.5f + 0.5f) * frame.viewport;
+            lo = glm::min(lo, window), hi = glm::max(hi, window);
+        }
+        if (behind || !std::isfinite(lo.x + lo.y + hi.x + hi.y)) lo = glm::vec2(0), hi = frame.viewport;
+        // Whole pixels, one more on each side: any sample inside the hole's hull is inside.
+        const int x0 = std::max(0, int(std::floor(lo.x)) - 1), y0 = std::max(0, int(std::floor(lo.y)) - 1);
+        const int x1 = std::min(width, int(std::ceil(hi.x)) + 1), y1 = std::min(height, int(std::ceil(hi.y)) + 1);
+        if (x1 <= x0 || y1 <= y0) continue;  // outside the image
+        out.hole_rects.push_back({x0, y0, x1 - x0, y1 - y0});
+        covered += double(x1 - x0) * double(y1 - y0);
+    }
+    if (covered > 0.5 * double(width) * double(height)) return BackFaceCulling{};
+    out.cull = true;
+    out.mirrored = glm::determinant(glm::mat3(frame.model_view)) < 0.0f;
+    if (out.hole_rects.empty()) return out;
+    glm::ivec2 lo(width, height), hi(0);
+    for (const glm::ivec4& r : out.hole_rects)
+        lo = glm::min(lo, glm::ivec2(r.x, r.y)), hi = glm::max(hi, glm::ivec2(r.x + r.z, r.y + r.w));
+    out.holes = {lo, hi - lo};
+    for (size_t c = 0; c < clusters.size(); ++c) {
+        const ClusterBounds& b = clusters.bounds[c];
+        if (classify_facing(b, frame.eye) == Facing::Front) continue;  // every face culled anyway
+        const glm::vec4 image = sphere_rect(b.center, b.radius, frame);
+        bool seen = false;
+        for (const glm::ivec4& r : out.hole_rects) seen = seen || overlaps(image, r);
+        if (!seen) continue;
+        const uint32_t first = clusters.first_face[c], count = clusters.first_face[c + 1] - first;
+        if (!out.back_runs.empty() && out.back_runs.back().first + out.back_runs.back().count == first)
+            out.back_runs.back().count += count;
+        else
+            out.back_runs.push_back({first, count});
+    }
+    return out;
+}
+
+}  // namespace kappa::render

@@ -1,0 +1,4 @@
+// Surface pass on white paper, fragment stage: white, opaque (premultiplied).
+out vec4 o_color;
+
+void main() { o_color = vec4(1.0); }
