@@ -147,6 +147,10 @@ bool holds_level(float lo, float hi, const LevelSet& levels) {
 
 }  // namespace
 
+std::vector<FaceRun> front_surface_runs(const MeshClusters& clusters, const FrameParams& frame) {
+    return visible_runs_where(clusters, frame, false, 0.0f, [](size_t) { return true; });
+}
+
 // The shaders compare float values with these bounds: a margin well above their rounding.
 constexpr float kBoundMargin = 1.0f + 1e-4f;
 

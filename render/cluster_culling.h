@@ -57,6 +57,11 @@ struct FaceRun {
     uint32_t first, count;  // faces [first, first + count) of the uploaded order
 };
 
+// The surface pass, culling back faces (render/back_face_culling.h), draws
+// only the clusters in view that are not entirely back-facing: the others'
+// faces would all be clipped or culled, after their vertices were shaded.
+std::vector<FaceRun> front_surface_runs(const MeshClusters& clusters, const FrameParams& frame);
+
 // The runs of faces the contour pass must draw for this frame. margin_px:
 // how far outside the image a line may still cover pixels inside it;
 // sc_threshold: the dimensionless s of the suggestive-contour test;

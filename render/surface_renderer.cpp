@@ -37,7 +37,7 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     glEnable(GL_CULL_FACE);
     glFrontFace(culling.mirrored ? GL_CW : GL_CCW);
     glCullFace(GL_BACK);
-    mesh.draw_triangles();
+    mesh.draw_triangles(front_surface_runs(mesh.clusters(), frame));
     if (!culling.back_runs.empty()) {
         glCullFace(GL_FRONT);
         glEnable(GL_SCISSOR_TEST);
