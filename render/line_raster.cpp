@@ -107,9 +107,18 @@ void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::ve
     const Prepared g = prepare(s, o);
     for (int y = first_row; y < end_row; ++y) {
         const float py = float(y) + 0.5f;
+        // The row's span of the capsule within r of the centre line (convex: one
+        // interval), the union of the band along the segment and the end discs;
+        // the pixels of the quad outside it get no coverage.
         float lo = -1e30f, hi = 1e30f;
         clip_row(q.nrm, q.a, -q.r, q.r, py, lo, hi);
-        clip_row(q.dir, q.a, -q.r, q.len + q.r, py, lo, hi);
+        clip_row(q.dir, q.a, 0.0f, q.len, py, lo, hi);
+        for (const glm::vec2 end : {glm::vec2(s.a), glm::vec2(s.b)}) {
+            const float dy = py - end.y, h2 = q.r * q.r - dy * dy;
+            if (!(h2 > 0.0f)) continue;
+            const float h = std::sqrt(h2);
+            lo = std::min(lo, end.x - h), hi = std::max(hi, end.x + h);
+        }
         if (!(lo <= hi)) continue;
         const int x0 = std::max(0, int(std::ceil(lo - 0.5f))), x1 = std::min(o.width - 1, int(std::floor(hi - 0.5f)));
         uint8_t* row = coverage + size_t(y) * size_t(o.width);
