@@ -117,10 +117,15 @@ const std::vector<AppearanceSetting>& appearance_settings() {
          "principal-highlights, dwkr (Dw kr = the suggestive-contour threshold), none (default "
          "contours,suggestive,creases)",
          "a comma list of " + cli::join(render::line_names(), ", "), word(render::parse_lines, &R::lines)},
-        {"detail", "PX|off",
-         "scale of the surface the lines follow, in pixels on screen: shape features much smaller draw no lines "
-         "(default 12; off: the paper's raw 1-ring estimate)",
-         "a size in pixels (0 < PX <= 1000) or off", word(render::parse_detail, &R::detail)},
+        [] {
+            AppearanceSetting a{"detail", "PX|off",
+                                "scale of the surface the lines follow, in pixels on screen: shape features much "
+                                "smaller draw no lines (default 12; off: the paper's raw 1-ring estimate)",
+                                "a size in pixels (0 < PX <= 1000) or off", word(render::parse_detail, &R::detail)};
+            a.number = &R::detail, a.slider_min = 1, a.slider_max = 64, a.logarithmic = true, a.format = "%.1f px";
+            a.can_be_off = true;
+            return a;
+        }(),
         {"crease-angle", "DEG|auto|off",
          "sharp edges: where faces turn by more than DEG degrees the mesh is split (normals and curvature per "
          "side) and the edge drawn as a crease; auto (default): 40 on meshes made of flat and sharp pieces, off on "
@@ -164,15 +169,19 @@ const std::vector<AppearanceSetting>& appearance_settings() {
                        "surface shading: none (white paper), lambert, toon (three greys), hemisphere, toon-bw (two "
                        "tones), gooch (cool to warm) (default lambert)",
                        render::parse_shading, &R::shading, "shading"),
-        {"light", "X,Y,Z",
-         "direction towards the light in camera coordinates (x right, y up, z towards the viewer; "
-         "default -0.35,0.45,1)",
-         "X,Y,Z",
-         [](R& s, const std::string& v) {
-             auto d = cli::parse_vec3(v);
-             if (d) s.light_dir = *d;
-             return bool(d);
-         }},
+        [] {
+            AppearanceSetting a{"light", "X,Y,Z",
+                                "direction towards the light in camera coordinates (x right, y up, z towards the "
+                                "viewer; default -0.35,0.45,1)",
+                                "X,Y,Z, not all zero", [](R& s, const std::string& v) {
+                                    auto d = cli::parse_vec3(v);
+                                    if (!d || !(std::fabs(d->x) + std::fabs(d->y) + std::fabs(d->z) > 0)) return false;
+                                    s.light_dir = *d;
+                                    return true;
+                                }};
+            a.vec3 = &R::light_dir, a.slider_min = -1, a.slider_max = 1, a.format = "%.2f";
+            return a;
+        }(),
         [] {
             AppearanceSetting a{"light-frame", "camera|model",
                                 "what --light is fixed to: the camera (the light moves with the view) or the model "
@@ -209,8 +218,18 @@ const std::vector<AppearanceSetting>& appearance_settings() {
          "vector output for pen plotters: one pen width, no line drawn twice, paths joined where they meet and "
          "ordered to shorten pen travel (default off)",
          "on or off", on_off(&R::plotter), &R::plotter},
-        {"background", "COLOR", "white, transparent, black or #rrggbb (default white)",
-         "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)},
+        [] {
+            AppearanceSetting a{"background", "COLOR", "white, transparent, black or #rrggbb (default white)",
+                                "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)};
+            a.vec4 = &R::background, a.color = true;
+            return a;
+        }(),
+        [] {
+            AppearanceSetting a{"line-color", "COLOR", "colour of the lines: black, white or #rrggbb (default black)",
+                                "black, white or #rrggbb", word(render::parse_color, &R::line_color)};
+            a.vec3 = &R::line_color, a.color = true, a.label = "line colour";
+            return a;
+        }(),
         switch_setting("msaa", "4x multisampling of the surface (default on)", &R::msaa, "4x MSAA"),
         {"line-extraction", "auto|gpu|cpu",
          "where the lines are extracted: on the CPU (fast on software GL such as llvmpipe), in geometry shaders "

@@ -24,21 +24,27 @@ struct AppearanceSetting {
     // On the command line a flag without value (--colorbar); in scripts on|off.
     bool render::RenderSettings::*flag = nullptr;
 
-    // The viewer's panel (app/viewer/ui_panel.cpp): numbers are drawn there
-    // as a slider over [slider_min, slider_max] from the fields below (the
-    // command line accepts the wider range of `expects`); other settings
-    // have widgets of their own.
+    // The viewer's panel (app/viewer/ui_panel.cpp) draws each setting from
+    // the fields below: numbers as a slider over [slider_min, slider_max]
+    // (the command line accepts the wider range of `expects`), vectors and
+    // colours, and words (below); lists (lines, vectors) have their groups.
     float render::RenderSettings::*number = nullptr;
     int render::RenderSettings::*integer = nullptr;
     float slider_min = 0, slider_max = 0;
     bool logarithmic = false;
     const char* format = "%.3f";
+    bool can_be_off = false;  // a number whose 0 means off: a checkbox beside its slider
+    // Vectors: three sliders over [slider_min, slider_max], or a colour
+    // picker when `color` (vec4: with its opacity).
+    glm::vec3 render::RenderSettings::*vec3 = nullptr;
+    glm::vec4 render::RenderSettings::*vec4 = nullptr;
+    bool color = false;
     // Settings that take one of a few words are drawn from these: `choices`
     // as a combo box, or as a checkbox when they are exactly off and on;
     // `get` gives the current word, `set` takes the one picked.
-    std::vector<std::string> choices;
-    std::function<std::string(const render::RenderSettings&)> get;
-    std::string label;  // in the panel (empty: the name)
+    std::vector<std::string> choices{};
+    std::function<std::string(const render::RenderSettings&)> get{};
+    std::string label{};  // in the panel (empty: the name)
 };
 
 const std::vector<AppearanceSetting>& appearance_settings();

@@ -162,6 +162,13 @@ std::optional<glm::vec4> parse_background(const std::string& s) {
     return c;
 }
 
+std::optional<glm::vec3> parse_color(const std::string& s) {
+    if (s == "transparent") return std::nullopt;
+    const auto c = parse_background(s);
+    if (!c) return std::nullopt;
+    return glm::vec3(*c);
+}
+
 std::string to_string(Shading s) { return shading_names()[size_t(s)]; }
 std::string to_string(ColorMap m) { return colormap_names()[size_t(m)]; }
 std::string to_string(Hatching h) { return hatching_names()[size_t(h)]; }

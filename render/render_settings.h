@@ -127,6 +127,8 @@ std::optional<float> parse_crease_angle(const std::string& s);
 float resolved_crease_angle(float setting, const Mesh& mesh);
 // "white", "transparent", "#rrggbb" (also "black").
 std::optional<glm::vec4> parse_background(const std::string& s);
+// "black", "white" or "#rrggbb": an opaque colour (RenderSettings::line_color).
+std::optional<glm::vec3> parse_color(const std::string& s);
 
 std::string to_string(Shading s);
 std::string to_string(ColorMap m);

@@ -44,6 +44,27 @@ TEST_CASE("kappa render: transparent background", "[render][cli]") {
     CHECK(image.at(48, 48).a == 255);
 }
 
+TEST_CASE("kappa render: --line-color draws the lines in that colour", "[render][cli]") {
+    const std::string dir = test::temp_dir(), out = dir + "/red.png";
+    const auto r = test::run_command(
+        kappa_render("-o " + out + " --size 160x120 --shading none --lines contours --line-color '#ff0000' -q"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const render::Image image = render::read_png(out);
+    size_t red = 0, dark = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const render::Rgba c = image.at(x, y);
+            red += c.r == 255 && c.g < 128 && c.b == c.g;  // red ink over white: (1, 1 - a, 1 - a)
+            dark += c.r < 128;
+        }
+    CHECK(red > 100);
+    CHECK(dark == 0);
+    const auto bad = test::run_command(kappa_render("-o " + dir + "/x.png --line-color transparent"));
+    CHECK(bad.exit_code != 0);
+    CHECK(bad.output.find("--line-color") != std::string::npos);
+}
+
 TEST_CASE("kappa render: --turntable writes numbered views that differ", "[render][cli]") {
     const std::string dir = test::temp_dir();
     const auto r = test::run_command(kappa_render("-o " + dir + "/turn.png --size 64x64 --turntable 3 -q"));

@@ -27,13 +27,34 @@ void help_tooltip(const char* setting) {
         ImGui::SetTooltip("--%s: %s", a->name.c_str(), a->help.c_str());
 }
 
-// A number or count of the settings table as a slider over its panel range.
+// A number, count, vector or colour of the settings table: a slider over its
+// panel range (with an on/off checkbox when 0 means off), three sliders, or a
+// colour picker.
 void setting_slider(const app::AppearanceSetting& a, render::RenderSettings& s) {
     const ImGuiSliderFlags flags = a.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+    const std::string label = a.label.empty() ? a.name : a.label;
+    if (a.number && a.can_be_off) {
+        float& value = s.*a.number;
+        bool on = value > 0;
+        if (ImGui::Checkbox(("##" + a.name + " on").c_str(), &on)) value = on ? render::RenderSettings{}.*a.number : 0.0f;
+        help_tooltip(a.name.c_str());
+        ImGui::SameLine();
+        if (!on) {
+            ImGui::Text("%s off", label.c_str());
+            help_tooltip(a.name.c_str());
+            return;
+        }
+    }
     if (a.number)
-        ImGui::SliderFloat(a.name.c_str(), &(s.*a.number), a.slider_min, a.slider_max, a.format, flags);
+        ImGui::SliderFloat(label.c_str(), &(s.*a.number), a.slider_min, a.slider_max, a.format, flags);
     else if (a.integer)
-        ImGui::SliderInt(a.name.c_str(), &(s.*a.integer), int(a.slider_min), int(a.slider_max), "%d", flags);
+        ImGui::SliderInt(label.c_str(), &(s.*a.integer), int(a.slider_min), int(a.slider_max), "%d", flags);
+    else if (a.vec3 && a.color)
+        ImGui::ColorEdit3(label.c_str(), &(s.*a.vec3).x, ImGuiColorEditFlags_NoInputs);
+    else if (a.vec3)
+        ImGui::SliderFloat3(label.c_str(), &(s.*a.vec3).x, a.slider_min, a.slider_max, a.format);
+    else if (a.vec4)
+        ImGui::ColorEdit4(label.c_str(), &(s.*a.vec4).x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreview);
     help_tooltip(a.name.c_str());
 }
 
@@ -95,22 +116,15 @@ void lines_section(render::RenderSettings& s) {
         if (ImGui::Checkbox(glyphs[size_t(i)].c_str(), &on)) s.vectors = on ? s.vectors | (1 << i) : s.vectors & ~(1 << i);
         help_tooltip("vectors");
     }
-    bool detail_on = s.detail > 0;
-    if (ImGui::Checkbox("##detail on", &detail_on)) s.detail = detail_on ? render::RenderSettings{}.detail : 0.0f;
-    help_tooltip("detail");
-    ImGui::SameLine();
-    if (detail_on) ImGui::SliderFloat("detail", &s.detail, 1.0f, 64.0f, "%.1f px", ImGuiSliderFlags_Logarithmic);
-    else ImGui::TextUnformatted("detail off");
-    help_tooltip("detail");
+    setting_slider("detail", s);
     setting_slider("line-width", s);
-    ImGui::ColorEdit3("line colour", &s.line_color.x, ImGuiColorEditFlags_NoInputs);
+    setting_slider("line-color", s);
 }
 
 void surface_section(render::RenderSettings& s, float map_range) {
     if (!ImGui::CollapsingHeader("Surface", ImGuiTreeNodeFlags_DefaultOpen)) return;
     setting_widget("shading", s);
-    ImGui::SliderFloat3("light", &s.light_dir.x, -1.0f, 1.0f, "%.2f");
-    help_tooltip("light");
+    setting_slider("light", s);
     setting_widget("light-frame", s);
     if (glm::length(s.light_dir) < 1e-3f) s.light_dir = {0, 0, 1};
     setting_widget("colormap", s);
@@ -123,8 +137,7 @@ void surface_section(render::RenderSettings& s, float map_range) {
     }
     setting_widget("hatching", s);
     if (s.hatching != render::Hatching::None) setting_slider("hatch-spacing", s);
-    ImGui::ColorEdit4("background", &s.background.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_AlphaPreview);
-    help_tooltip("background");
+    setting_slider("background", s);
     setting_widget("msaa", s);
 }
 
