@@ -215,24 +215,19 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
                             })});
     const std::vector<Block> blocks = blocks_of(families);
 
-    // Per vertex, once: what each family's per-face tests read. The
-    // view-dependent curvature of apparent ridges and principal highlights,
-    // the costliest, only at the vertices of the triangles they will test.
-    const ViewQuantities q = view_lines ? compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs)
+    // Per vertex, once, at the vertices of the triangles some family will
+    // test (the rest of the mesh is culled): what the per-face tests read.
+    std::vector<uint8_t> needed(m.vertex_count(), 0);
+    for (const Block& block : blocks)
+        for (const MaskedRun& r : block.runs)
+            for (uint32_t f = r.first; f < r.first + r.count; ++f)
+                for (int k = 0; k < 3; ++k) needed[m.faces[f][k]] = 1;
+    const ViewQuantities q = view_lines ? compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs, needed)
                                         : ViewQuantities{};
-    std::vector<uint8_t> ridge_needed;
-    if (l.view_ridges()) {
-        ridge_needed.assign(m.vertex_count(), 0);
-        for (const Block& block : blocks)
-            for (const MaskedRun& r : block.runs)
-                if (r.families & kViewRidges)
-                    for (uint32_t f = r.first; f < r.first + r.count; ++f)
-                        for (int k = 0; k < 3; ++k) ridge_needed[m.faces[f][k]] = 1;
-    }
     const std::vector<ViewRidgeVertex> ridge_vertices =
-        l.view_ridges() ? view_ridge_vertices(m, fields, frame.eye, fs, ridge_needed) : std::vector<ViewRidgeVertex>{};
+        l.view_ridges() ? view_ridge_vertices(m, fields, frame.eye, fs, needed) : std::vector<ViewRidgeVertex>{};
     const LevelValues level = o.isophotes || o.topo ? level_values(m, fields, levels) : LevelValues{};
-    const LinePrefilter prefilter = make_line_prefilter(m, fields, q, ridge_vertices, vr, level, levels);
+    const LinePrefilter prefilter = make_line_prefilter(m, fields, q, ridge_vertices, vr, level, levels, needed);
 
     // One pass over the faces for every family, block by block, the blocks
     // taken by the workers as they come free; each block writes its own

@@ -53,7 +53,8 @@ bool bands_differ(uint32_t a, uint32_t b, uint32_t c, int shift) {
 
 LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
                                   const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
-                                  const LevelValues& levels, const LineExtractionOptions& o) {
+                                  const LevelValues& levels, const LineExtractionOptions& o,
+                                  const std::vector<uint8_t>& only) {
     LinePrefilter p;
     p.options = o;
     p.apparent_ridges = ridge_options.apparent_ridges;
@@ -63,7 +64,9 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
     const bool has_view = view.kr.size() == n, has_ridges = ridges.size() == n;
     const float rv_limit = o.rv_threshold / o.feature_size;
     const float iso_step = 1.0f / float(std::max(1, o.isophote_count));
+    const bool all = only.size() != n;
     parallel_for(n, [&](size_t v) {
+        if (!all && !only[v]) return;
         uint32_t b = fields.unreliable(v) ? uint32_t(kUnreliable) : 0u;
         if (has_view) {
             if (view.contour_ndotv[v] > 0) b |= kContourFront;

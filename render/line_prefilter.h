@@ -37,9 +37,12 @@ struct LinePrefilter {
 
 // options: as for the per-triangle tests, with isophote and topo levels
 // (isophote_count, topo_first, topo_step, topo_count); the other inputs may
-// be empty where their families are off. Parallel over vertices.
+// be empty where their families are off; only: empty, or one flag per vertex,
+// non-zero at the vertices of the triangles that will be asked about (the
+// others get no bits). Parallel over vertices.
 LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
                                   const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
-                                  const LevelValues& levels, const LineExtractionOptions& options);
+                                  const LevelValues& levels, const LineExtractionOptions& options,
+                                  const std::vector<uint8_t>& only = {});
 
 }  // namespace kappa::render

@@ -11,13 +11,15 @@ namespace kappa {
 
 ViewQuantities compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
                                        const std::vector<glm::vec3>& contour_normals, glm::vec3 eye,
-                                       float feature_size) {
+                                       float feature_size, const std::vector<uint8_t>& only) {
     const size_t n = mesh.vertex_count();
+    const bool all = only.size() != n;
     const bool own_contour_normals = contour_normals.size() == n;
     ViewQuantities q;
     q.ndotv.resize(n), q.contour_ndotv.resize(n), q.kr.resize(n), q.sc_strength.resize(n);
     const float fs2 = feature_size * feature_size;
     parallel_for(n, [&](size_t i) {
+        if (!all && !only[i]) return;
         const glm::vec3 v = glm::normalize(eye - mesh.positions[i]);
         const glm::vec3& nrm = fields.normals[i];
         const float k1 = fields.k1[i], k2 = fields.k2[i];

@@ -13,6 +13,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace kappa {
@@ -26,10 +27,11 @@ struct ViewQuantities {
 
 // fields: with curvature (SurfaceFields::has_curvature); contour_normals: the
 // normals whose n.v zeros are the occluding contours (empty: fields.normals;
-// with --detail, the pixel-scale normals); feature_size: fs. Parallel over
-// vertices; the same numbers for any thread count.
+// with --detail, the pixel-scale normals); feature_size: fs; only: empty, or
+// one flag per vertex, non-zero where the quantities are needed (the others
+// are left zero). Parallel over vertices; the same numbers for any thread count.
 ViewQuantities compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
                                        const std::vector<glm::vec3>& contour_normals, glm::vec3 eye,
-                                       float feature_size);
+                                       float feature_size, const std::vector<uint8_t>& only = {});
 
 }  // namespace kappa
