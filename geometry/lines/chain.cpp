@@ -31,13 +31,18 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
     // their position's bits (no hash table: cheaper for the short lists of
     // one block of a frame, and the same result).
     const size_t n = segments.size();
-    std::vector<std::pair<PointKey, uint32_t>> sorted(2 * n);
+    // Scratch kept per thread: the CPU line pass chains a few segments at a
+    // time, thousands of times a frame.
+    thread_local std::vector<std::pair<PointKey, uint32_t>> sorted;
+    thread_local std::vector<uint32_t> end_point, first, ends;
+    thread_local std::vector<char> used;
+    sorted.resize(2 * n);
     for (size_t e = 0; e < 2 * n; ++e) sorted[e] = {key_of(e % 2 ? segments[e / 2].b : segments[e / 2].a), uint32_t(e)};
     std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) {
         return std::tie(a.first.x, a.first.y, a.first.z, a.second) < std::tie(b.first.x, b.first.y, b.first.z, b.second);
     });
-    std::vector<uint32_t> end_point(2 * n), first, ends(2 * n);
-    first.reserve(2 * n + 1);
+    end_point.resize(2 * n), ends.resize(2 * n);
+    first.clear();
     for (size_t i = 0; i < sorted.size(); ++i) {
         if (i == 0 || !(sorted[i].first == sorted[i - 1].first)) first.push_back(uint32_t(i));
         end_point[sorted[i].second] = uint32_t(first.size() - 1);
@@ -53,7 +58,7 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
         return long(a == e ? b : a);
     };
 
-    std::vector<char> used(n, 0);
+    used.assign(n, 0);
     std::vector<Polyline> out;
     // Walks from segment s, entering at end `in`, appending points, until a path end.
     auto walk = [&](size_t s, int in_side, Polyline& line) {
@@ -71,13 +76,17 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
         }
     };
     auto start_at = [&](size_t s, int in_side) {
-        Polyline line;
+        // Grown in scratch kept per thread, then copied at its final size: one
+        // allocation per array instead of one per doubling.
+        thread_local Polyline line;
+        line.points.clear(), line.opacity.clear(), line.strength.clear();
+        line.tolerance = Polyline{}.tolerance;
         const LineSegment& seg = segments[s];
         line.points.push_back(in_side ? seg.b : seg.a);
         line.opacity.push_back(in_side ? seg.opacity_b : seg.opacity_a);
         line.strength.push_back(in_side ? seg.strength_b : seg.strength_a);
         walk(s, in_side, line);
-        out.push_back(std::move(line));
+        out.push_back(line);
     };
     // Open paths first, from their ends, then what is left (closed loops).
     for (size_t s = 0; s < n; ++s)
