@@ -172,7 +172,8 @@ TEST_CASE("the uploaded mesh is the input's faces and fields, reordered", "[rend
 // (geometry/back_faces.h, render/back_face_culling.h): the depth it leaves,
 // which every line's visibility is tested against, is the depth of drawing
 // every face, in views into the holes of a scan, from below, close up and
-// mirrored; and white paper (positions only) leaves the depth Lambert does.
+// mirrored, with and without MSAA; and white paper (positions only) leaves
+// the depth Lambert does.
 TEST_CASE("culled back faces leave the depth of every face drawn", "[render][clusters]") {
     const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));  // holes in its base
     const SurfaceFields fields = compute_surface_fields(bunny);
@@ -191,12 +192,13 @@ TEST_CASE("culled back faces leave the depth of every face drawn", "[render][clu
                           {c + glm::vec3(0.1f, -0.25f, 0.45f) * d, false},  // close up, the base's holes large
                           {c + glm::vec3(0.3f, -1.0f, 0.2f) * d, true}};
     size_t culled_views = 0;
+    for (const bool msaa : {false, true})
     for (const View& v : views) {
         render::Camera camera = render::Camera::look_at(v.eye, c, glm::vec3(0, 1, 0), 30.0f);
         if (v.mirrored) camera.view = camera.view * glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1));
         render::RenderSettings s = test::lines_only({false, false, false, false});
         s.shading = render::Shading::Lambert;
-        s.msaa = false;
+        s.msaa = msaa;
         const auto frame = render::FrameParams::make(camera, r.mesh()->bounds(), 400, 300);
         culled_views += render::back_face_culling(r.mesh()->back_faces(), r.mesh()->bounds(), r.mesh()->clusters(),
                                                   frame).cull;
@@ -217,7 +219,8 @@ TEST_CASE("culled back faces leave the depth of every face drawn", "[render][clu
             largest = std::max(largest, std::fabs(culled[i] - every[i]));
             paper_differs += paper[i] != culled[i];
         }
-        INFO("eye " << v.eye.x << " " << v.eye.y << " " << v.eye.z << (v.mirrored ? " mirrored" : "") << ": "
+        INFO("eye " << v.eye.x << " " << v.eye.y << " " << v.eye.z << (v.mirrored ? " mirrored" : "")
+                    << (msaa ? ", 4x MSAA" : "") << ": "
                     << covered << " pixels covered, " << differ << " differ");
         CHECK(covered > 10000);
         // A pixel centre on a contour edge, between a front and a back
@@ -228,7 +231,7 @@ TEST_CASE("culled back faces leave the depth of every face drawn", "[render][clu
         CHECK(largest < 1e-3f);
         CHECK(paper_differs == 0);
     }
-    CHECK(culled_views == std::size(views));  // the culling was on in every view
+    CHECK(culled_views == 2 * std::size(views));  // the culling was on in every view
 }
 
 TEST_CASE("back faces are not culled with the eye inside the bounding sphere or on open sheets", "[render][clusters]") {
