@@ -27,28 +27,37 @@ PointKey key_of(glm::vec3 p) {
 
 std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
     // Each end (segment * 2 + side) belongs to a point; ends of a point are
-    // listed together, in end order. Points are found by sorting the ends by
-    // their position's bits (no hash table: cheaper for the short lists of
-    // one block of a frame, and the same result).
-    const size_t n = segments.size();
+    // listed together, in end order. Points are found in an open-addressing
+    // table on their position's bits, numbered as first met; a counting sort
+    // then lists each point's ends.
+    const size_t n = segments.size(), ne = 2 * n;
     // Scratch kept per thread: the CPU line pass chains a few segments at a
     // time, thousands of times a frame.
-    thread_local std::vector<std::pair<PointKey, uint32_t>> sorted;
-    thread_local std::vector<uint32_t> end_point, first, ends;
+    thread_local std::vector<uint32_t> table, end_point, first, ends, next_slot;
+    thread_local std::vector<PointKey> point_keys;
     thread_local std::vector<char> used;
-    sorted.resize(2 * n);
-    for (size_t e = 0; e < 2 * n; ++e) sorted[e] = {key_of(e % 2 ? segments[e / 2].b : segments[e / 2].a), uint32_t(e)};
-    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) {
-        return std::tie(a.first.x, a.first.y, a.first.z, a.second) < std::tie(b.first.x, b.first.y, b.first.z, b.second);
-    });
-    end_point.resize(2 * n), ends.resize(2 * n);
-    first.clear();
-    for (size_t i = 0; i < sorted.size(); ++i) {
-        if (i == 0 || !(sorted[i].first == sorted[i - 1].first)) first.push_back(uint32_t(i));
-        end_point[sorted[i].second] = uint32_t(first.size() - 1);
-        ends[i] = sorted[i].second;
+    size_t capacity = 16;
+    while (capacity < 2 * ne) capacity *= 2;
+    table.assign(capacity, 0);  // point + 1; 0: empty
+    point_keys.clear();
+    end_point.resize(ne);
+    for (size_t e = 0; e < ne; ++e) {
+        const PointKey k = key_of(e % 2 ? segments[e / 2].b : segments[e / 2].a);
+        uint64_t h = uint64_t(k.x) * 0x9E3779B97F4A7C15ull + uint64_t(k.y) * 0xC2B2AE3D27D4EB4Full +
+                     uint64_t(k.z) * 0x165667B19E3779F9ull;
+        h ^= h >> 29;
+        size_t slot = size_t(h) & (capacity - 1);
+        while (table[slot] != 0 && !(point_keys[table[slot] - 1] == k)) slot = (slot + 1) & (capacity - 1);
+        if (table[slot] == 0) point_keys.push_back(k), table[slot] = uint32_t(point_keys.size());
+        end_point[e] = table[slot] - 1;
     }
-    first.push_back(uint32_t(sorted.size()));
+    const size_t points = point_keys.size();
+    first.assign(points + 1, 0);
+    for (size_t e = 0; e < ne; ++e) ++first[end_point[e] + 1];
+    for (size_t p = 0; p < points; ++p) first[p + 1] += first[p];
+    next_slot.assign(first.begin(), first.end() - 1);
+    ends.resize(ne);
+    for (size_t e = 0; e < ne; ++e) ends[next_slot[end_point[e]]++] = uint32_t(e);
     auto degree = [&](uint32_t p) { return first[p + 1] - first[p]; };
     // The other end at the same point, when the point joins exactly two ends.
     auto partner = [&](size_t e) -> long {
