@@ -21,6 +21,7 @@
 
 #include "geometry/cluster_bounds.h"
 #include "geometry/face_clusters.h"
+#include "geometry/lines/line_extraction.h"
 #include "geometry/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/frame_params.h"
@@ -84,12 +85,6 @@ std::vector<FaceRun> curvature_line_runs(const MeshClusters& clusters, const Fra
                                          float margin_px, const LineSelection& lines, float rv_threshold);
 std::vector<FaceRun> view_ridge_runs(const MeshClusters& clusters, const FrameParams& frame, bool back_facing,
                                      float margin_px, const LineSelection& lines, float ph_threshold);
-
-// Levels first + k step, k = 0 .. count - 1.
-struct LevelSet {
-    float first, step;
-    int count;
-};
 
 // The clusters that can cross a level: isophotes (n.l
 // with the unit light direction over the cone of the fields' normals) and

@@ -178,10 +178,8 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     // Level lines: isophotes with the shading's light (model coordinates), topographic lines along y.
     LineExtractionOptions levels = o;
     levels.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
-    levels.isophote_count = s.isophote_count;
-    levels.topo_count = s.topo_count;
-    levels.topo_step = 2.0f * mesh.bounds().radius / float(std::max(1, s.topo_count));
-    levels.topo_first = mesh.bounds().center.y - mesh.bounds().radius + 0.5f * levels.topo_step;
+    levels.isophote_levels = isophote_level_set(s.isophote_count);
+    levels.topo_levels = topo_level_set(mesh.bounds().center.y, mesh.bounds().radius, s.topo_count);
     LineExtractionOptions iso = levels, topo = levels;
     iso.topo = false, topo.isophotes = false;
 
@@ -202,16 +200,14 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
                                 return view_ridge_runs(mesh.clusters(), frame, s.hidden_lines, margin, l,
                                                        s.ph_threshold);
                             })});
-    const float iso_step = 1.0f / float(std::max(1, s.isophote_count));
     if (o.isophotes)
         families.push_back({kIsophotes, runs_or_all([&] {
                                 return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels.light,
-                                                     {0.5f * iso_step, iso_step, s.isophote_count});
+                                                     levels.isophote_levels);
                             })});
     if (o.topo)
         families.push_back({kTopo, runs_or_all([&] {
-                                return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin,
-                                                 {levels.topo_first, levels.topo_step, levels.topo_count});
+                                return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels.topo_levels);
                             })});
     const std::vector<Block> blocks = blocks_of(families);
 

@@ -29,7 +29,9 @@ constexpr uint32_t kAnyBand = 255;  // too many levels, or a value on a level wi
 
 // How many of the levels first + k step (k < count) lie below v: a level
 // line crosses a triangle only where its vertices' bands differ.
-uint32_t band(float v, float first, float step, int count) {
+uint32_t band(float v, const LevelSet& levels) {
+    const float first = levels.first, step = levels.step;
+    const int count = levels.count;
     if (count <= 0 || !(step > 0)) return 0;
     if (count >= int(kAnyBand)) return kAnyBand;
     const float x = (v - first) / step;
@@ -63,7 +65,6 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
     p.bits.assign(n, 0);
     const bool has_view = view.kr.size() == n, has_ridges = ridges.size() == n;
     const float rv_limit = o.rv_threshold / o.feature_size;
-    const float iso_step = 1.0f / float(std::max(1, o.isophote_count));
     const bool all = only.size() != n;
     parallel_for(n, [&](size_t v) {
         if (!all && !only[v]) return;
@@ -90,9 +91,9 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
             if (std::fabs(r.ph_strength) - ridge_options.ph_threshold > 0) b |= kPrincipalStrong;
         }
         if (levels.isophote.size() == n)
-            b |= band(levels.isophote[v], 0.5f * iso_step, iso_step, o.isophote_count) << kIsophoteShift;
+            b |= band(levels.isophote[v], o.isophote_levels) << kIsophoteShift;
         if (levels.height.size() == n)
-            b |= band(levels.height[v], o.topo_first, o.topo_step, o.topo_count) << kTopoShift;
+            b |= band(levels.height[v], o.topo_levels) << kTopoShift;
         p.bits[v] = b;
     });
     return p;

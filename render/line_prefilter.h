@@ -36,7 +36,7 @@ struct LinePrefilter {
 };
 
 // options: as for the per-triangle tests, with isophote and topo levels
-// (isophote_count, topo_first, topo_step, topo_count); the other inputs may
+// (isophote_levels, topo_levels); the other inputs may
 // be empty where their families are off; only: empty, or one flag per vertex,
 // non-zero at the vertices of the triangles that will be asked about (the
 // others get no bits). Parallel over vertices.

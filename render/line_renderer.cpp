@@ -137,8 +137,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         level_lines_.set("u_kind", 0);
         const glm::vec3 light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
         level_lines_.set("u_light_model", light);
-        const float step = 1.0f / float(s.isophote_count);
-        const LevelSet levels{0.5f * step, step, s.isophote_count};
+        const LevelSet levels = isophote_level_set(s.isophote_count);
         level_lines_.set("u_first", levels.first);
         level_lines_.set("u_step", levels.step);
         level_lines_.set("u_count", levels.count);
@@ -147,8 +146,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     if (s.lines.topo && s.topo_count > 0 && !cpu_lines) {
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 1);
-        const float step = 2.0f * mesh.bounds().radius / float(s.topo_count);
-        const LevelSet levels{mesh.bounds().center.y - mesh.bounds().radius + 0.5f * step, step, s.topo_count};
+        const LevelSet levels = topo_level_set(mesh.bounds().center.y, mesh.bounds().radius, s.topo_count);
         level_lines_.set("u_first", levels.first);
         level_lines_.set("u_step", levels.step);
         level_lines_.set("u_count", levels.count);

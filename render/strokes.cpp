@@ -146,10 +146,8 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
     options.fade = settings.fade;
     // Level lines as render/line_renderer.cpp draws them.
     options.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(settings, frame));
-    options.isophote_count = settings.isophote_count;
-    options.topo_count = settings.topo_count;
-    options.topo_step = 2.0f * bounds.radius / float(std::max(1, settings.topo_count));
-    options.topo_first = bounds.center.y - bounds.radius + 0.5f * options.topo_step;
+    options.isophote_levels = isophote_level_set(settings.isophote_count);
+    options.topo_levels = topo_level_set(bounds.center.y, bounds.radius, settings.topo_count);
     static const std::vector<glm::vec3> none;
     const ViewQuantities quantities = compute_view_quantities(
         *source.mesh, *source.fields, source.contour_normals ? *source.contour_normals : none, frame.eye,

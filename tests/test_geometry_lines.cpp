@@ -142,8 +142,8 @@ TEST_CASE("CPU curvature and level lines lie where the mathematics puts them", "
     lo.contours = lo.suggestive = lo.creases = false;
     lo.isophotes = lo.topo = true;
     lo.light = glm::normalize(glm::vec3(1, 1, 1));
-    lo.isophote_count = 4;
-    lo.topo_first = -0.75f, lo.topo_step = 0.5f, lo.topo_count = 4;
+    lo.isophote_levels = isophote_level_set(4);
+    lo.topo_levels = {-0.75f, 0.5f, 4};
     const ExtractedLines levels = lines_of(sphere, sf, glm::vec3(0, 0, 10), lo);
     CHECK(chain_segments(levels[int(LineType::Isophote)]).size() == 4);
     CHECK(chain_segments(levels[int(LineType::Topo)]).size() == 4);

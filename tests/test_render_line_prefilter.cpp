@@ -25,7 +25,7 @@ TEST_CASE("the line prefilter keeps every triangle that holds a line and skips m
     o.isophotes = o.topo = true;
     o.feature_size = fs;
     o.light = glm::normalize(glm::vec3(0.3f, 0.5f, 1.0f));
-    o.topo_first = -0.1f, o.topo_step = 0.02f, o.topo_count = 12;
+    o.topo_levels = {-0.1f, 0.02f, 12};
     ViewRidgeOptions vr;
     vr.apparent_ridges = vr.principal_highlights = true;
     vr.feature_size = fs;

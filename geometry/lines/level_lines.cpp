@@ -2,6 +2,7 @@
 
 #include "geometry/lines/zero_crossings.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kappa {
@@ -10,8 +11,10 @@ using namespace lines;
 
 namespace {
 
-void levels_of_face(const Mesh& mesh, const Face& t, const std::vector<float>& value, float first, float step,
-                    int count, std::vector<LineSegment>& out) {
+void levels_of_face(const Mesh& mesh, const Face& t, const std::vector<float>& value, const LevelSet& levels,
+                    std::vector<LineSegment>& out) {
+    const float first = levels.first, step = levels.step;
+    const int count = levels.count;
     if (count <= 0 || !(step > 0)) return;
     const glm::vec3 p[3] = {mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]};
     const float v[3] = {value[t[0]], value[t[1]], value[t[2]]};
@@ -29,13 +32,23 @@ void levels_of_face(const Mesh& mesh, const Face& t, const std::vector<float>& v
 
 }  // namespace
 
+LevelSet isophote_level_set(int count) {
+    const float step = 1.0f / float(std::max(1, count));
+    return {0.5f * step, step, count};
+}
+
+LevelSet topo_level_set(float center_y, float radius, int count) {
+    const float step = 2.0f * radius / float(std::max(1, count));
+    return {center_y - radius + 0.5f * step, step, count};
+}
+
 LevelValues level_values(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& o) {
     LevelValues v;
-    if (o.isophotes && o.isophote_count > 0) {
+    if (o.isophotes && o.isophote_levels.count > 0) {
         v.isophote.resize(mesh.vertex_count());
         for (size_t i = 0; i < v.isophote.size(); ++i) v.isophote[i] = glm::dot(fields.normals[i], o.light);
     }
-    if (o.topo && o.topo_count > 0) {
+    if (o.topo && o.topo_levels.count > 0) {
         v.height.resize(mesh.vertex_count());
         for (size_t i = 0; i < v.height.size(); ++i) v.height[i] = mesh.positions[i].y;
     }
@@ -44,12 +57,9 @@ LevelValues level_values(const Mesh& mesh, const SurfaceFields& fields, const Li
 
 void level_lines_of_face(const Mesh& mesh, const Face& t, const LevelValues& v, const LineExtractionOptions& o,
                          ExtractedLines& lines) {
-    if (o.isophotes && !v.isophote.empty()) {
-        const float step = 1.0f / float(o.isophote_count);
-        levels_of_face(mesh, t, v.isophote, 0.5f * step, step, o.isophote_count, lines[int(LineType::Isophote)]);
-    }
-    if (o.topo && !v.height.empty())
-        levels_of_face(mesh, t, v.height, o.topo_first, o.topo_step, o.topo_count, lines[int(LineType::Topo)]);
+    if (o.isophotes && !v.isophote.empty())
+        levels_of_face(mesh, t, v.isophote, o.isophote_levels, lines[int(LineType::Isophote)]);
+    if (o.topo && !v.height.empty()) levels_of_face(mesh, t, v.height, o.topo_levels, lines[int(LineType::Topo)]);
 }
 
 void extract_level_lines(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& o,

@@ -60,6 +60,17 @@ struct LineSegment {
                                     // half the longest edge of its triangle, or half its edge
 };
 
+// Levels first + k step, k = 0 .. count - 1 (level lines: isophotes, topographic lines).
+struct LevelSet {
+    float first = 0, step = 1;
+    int count = 0;
+};
+// Isophotes at n.l = (k - 1/2) / N, k = 1..N (shading's light, --isophotes N).
+LevelSet isophote_level_set(int count);
+// Topographic lines: N heights evenly across a bounding sphere's extent along
+// y (centre y, radius), the first and last half a step inside (--topo N).
+LevelSet topo_level_set(float center_y, float radius, int count);
+
 struct LineExtractionOptions {
     bool contours = true, suggestive = true, boundaries = false, creases = true;
     bool suggestive_highlights = false, dwkr = false;
@@ -74,12 +85,11 @@ struct LineExtractionOptions {
     float rv_threshold = 1.5f;    // dimensionless: ridges and valleys where |kmax| > it / fs
     float feature_size = 1;       // fs
     bool fade = true;             // suggestive contours and highlights, ridges and valleys
-    // Level lines: isophotes n.l = (k - 1/2) / N, k = 1..N, for the light direction (model
-    // coordinates, unit); topographic lines at `topo_count` heights along y, from topo_first by topo_step.
+    // Level lines: isophotes of n.l for the light direction (model coordinates,
+    // unit) and topographic lines of the height y, at these levels.
     glm::vec3 light{0, 0, 1};
-    int isophote_count = 4;
-    float topo_first = 0, topo_step = 1;
-    int topo_count = 12;
+    LevelSet isophote_levels = isophote_level_set(4);
+    LevelSet topo_levels{0, 1, 12};
 };
 
 // A sharp edge (geometry/creases.h) with the unit normals of its two faces.
