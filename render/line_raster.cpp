@@ -37,7 +37,7 @@ Quad quad_of(const WindowSegment& s, float r) {
 void clip_row(glm::vec2 u, glm::vec2 a, float lo_c, float hi_c, float y, float& lo, float& hi) {
     const float base = glm::dot(u, a) - u.y * y;  // u.x x must lie in [lo_c + base, hi_c + base]
     if (std::fabs(u.x) < 1e-12f) {
-        if (-base < lo_c || -base > hi_c) lo = 1, hi = 0;  // the row misses the slab
+        if (-base < lo_c || -base > hi_c) lo = 1e30f, hi = -1e30f;  // the row misses the slab: empty
         return;
     }
     float x0 = (lo_c + base) / u.x, x1 = (hi_c + base) / u.x;
@@ -66,7 +66,8 @@ Prepared prepare(const WindowSegment& s, const LineRasterParams& o) {
 float pixel_ink(const WindowSegment& s, const Prepared& g, glm::vec2 p, const std::vector<float>& depth,
                 const LineRasterParams& o) {
     const glm::vec2 pa = p - g.a;
-    const float t = std::clamp(glm::dot(pa, g.ab) * g.inv_len2, 0.0f, 1.0f);
+    const float along = glm::dot(pa, g.ab) * g.inv_len2;
+    const float t = along > 0.0f ? std::min(along, 1.0f) : 0.0f;  // clamp, NaN (a segment beyond float) to 0
     const glm::vec2 from_q = pa - t * g.ab;  // p - q, q the closest point of the centre line
     const float d2 = glm::dot(from_q, from_q);
     if (d2 >= g.reach * g.reach) return 0;  // coverage reach - |p - q| <= 0
@@ -76,7 +77,9 @@ float pixel_ink(const WindowSegment& s, const Prepared& g, glm::vec2 p, const st
     auto depth_at = [&](glm::ivec2 c) { return depth[size_t(c.y) * size_t(o.width) + size_t(c.x)]; };
     // The texel holding x, clamped to the image (floor by truncation of x >= 0: no libm call per pixel).
     auto texel = [&](glm::vec2 x) {
-        return glm::ivec2(std::min(int(std::max(x.x, 0.0f)), size.x - 1), std::min(int(std::max(x.y, 0.0f)), size.y - 1));
+        const float cx = x.x > 0.0f ? std::min(x.x, float(size.x - 1)) : 0.0f;  // NaN to 0
+        const float cy = x.y > 0.0f ? std::min(x.y, float(size.y - 1)) : 0.0f;
+        return glm::ivec2(int(cx), int(cy));
     };
     if (s.exterior_only) {
         const glm::vec2 side = g.len2 > 1e-12f ? glm::vec2(-g.ab.y, g.ab.x) / g.len : glm::vec2(1, 0);
@@ -113,6 +116,7 @@ void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::ve
         float lo = -1e30f, hi = 1e30f;
         clip_row(q.nrm, q.a, -q.r, q.r, py, lo, hi);
         clip_row(q.dir, q.a, 0.0f, q.len, py, lo, hi);
+        if (!(lo <= hi)) lo = 1e30f, hi = -1e30f;  // the band misses the row: only the discs remain
         for (const glm::vec2 end : {glm::vec2(s.a), glm::vec2(s.b)}) {
             const float dy = py - end.y, h2 = q.r * q.r - dy * dy;
             if (!(h2 > 0.0f)) continue;
@@ -120,6 +124,7 @@ void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::ve
             lo = std::min(lo, end.x - h), hi = std::max(hi, end.x + h);
         }
         if (!(lo <= hi)) continue;
+        lo = std::max(lo, -1.0f), hi = std::min(hi, float(o.width) + 1.0f);  // in range for int
         const int x0 = std::max(0, int(std::ceil(lo - 0.5f))), x1 = std::min(o.width - 1, int(std::floor(hi - 0.5f)));
         uint8_t* row = coverage + size_t(y) * size_t(o.width);
         for (int x = x0; x <= x1; ++x) {
@@ -145,8 +150,10 @@ void rasterize_lines(const std::vector<WindowSegment>& segments, const std::vect
     std::vector<glm::ivec2> rows(segments.size());
     for (size_t i = 0; i < segments.size(); ++i) {
         const WindowSegment& s = segments[i];
+        if (!std::isfinite(s.a.x + s.a.y + s.a.z + s.b.x + s.b.y + s.b.z + s.alpha.x + s.alpha.y))
+            continue;  // never drawn (the GL would drop it too)
         const float y_lo = std::min(s.a.y, s.b.y) - r, y_hi = std::max(s.a.y, s.b.y) + r;
-        if (!(y_hi >= 0.0f && y_lo <= float(o.height))) continue;  // also drops non-finite ends
+        if (!(y_hi >= 0.0f && y_lo <= float(o.height))) continue;
         rows[i] = {std::max(0, int(std::floor(y_lo))), std::min(o.height, int(std::ceil(y_hi)) + 1)};
         for (int b = rows[i].x / kBandRows; b < bands && b * kBandRows < rows[i].y; ++b) in_band[size_t(b)].push_back(uint32_t(i));
     }

@@ -15,6 +15,7 @@
 #include "geometry/surface_analysis.h"
 #include "render/line_raster.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -164,4 +165,24 @@ TEST_CASE("CPU line raster draws what the GL draws from the same segments", "[re
         CHECK(double(differ) < 0.002 * double(ink));
     }
     test::renderer().set_cpu_line_raster(default_raster);
+}
+
+TEST_CASE("CPU line raster: non-finite and far-off segments draw nothing and stop", "[render][line-raster]") {
+    const std::vector<float> empty(kW * kH, 1.0f);
+    const float nan = std::nanf(""), inf = INFINITY;
+    std::vector<render::WindowSegment> bad = {segment({nan, 10}, {20, 10}), segment({10, 10}, {inf, 10}),
+                                              segment({10, nan}, {20, 30}), segment({-1e30f, 5}, {-1e29f, 40}),
+                                              segment({5, 1e30f}, {6, 2e30f})};
+    bad[0].alpha = {nan, 1};
+    const auto coverage = draw(bad, empty);
+    CHECK(std::count(coverage.begin(), coverage.end(), uint8_t(0)) == long(coverage.size()));
+    // A vertical line's end rows cover only its end discs.
+    const auto vertical = draw({segment({40.5f, 10.5f}, {40.5f, 30.5f})}, empty);
+    for (int x = 0; x < kW; ++x) {
+        if (x == 40) continue;
+        CHECK(at(vertical, x, 10) == 0);
+        CHECK(at(vertical, x, 30) == 0);
+    }
+    CHECK(at(vertical, 40, 10) == 255);
+    CHECK(at(vertical, 40, 30) == 255);
 }
