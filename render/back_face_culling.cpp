@@ -51,6 +51,8 @@ BackFaceCulling back_face_culling(const BackFaceVisibility& visibility, const Bo
             lo = glm::min(lo, window), hi = glm::max(hi, window);
         }
         if (behind || !std::isfinite(lo.x + lo.y + hi.x + hi.y)) lo = glm::vec2(0), hi = frame.viewport;
+        lo = glm::clamp(lo, glm::vec2(-2.0f), frame.viewport + 2.0f);  // in range for int
+        hi = glm::clamp(hi, glm::vec2(-2.0f), frame.viewport + 2.0f);
         // Whole pixels, one more on each side: any sample inside the hole's hull is inside.
         const int x0 = std::max(0, int(std::floor(lo.x)) - 1), y0 = std::max(0, int(std::floor(lo.y)) - 1);
         const int x1 = std::min(width, int(std::ceil(hi.x)) + 1), y1 = std::min(height, int(std::ceil(hi.y)) + 1);
