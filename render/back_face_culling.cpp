@@ -8,30 +8,6 @@
 
 namespace kappa::render {
 
-namespace {
-
-// A rectangle (pixels: x0, y0, x1, y1) holding the image of the sphere (c, r),
-// or the whole viewport when it reaches the eye's plane. In view space a
-// point p of the sphere has |p.x/d' - c.x/d| <= r (1 + |c.x|/d) / (d - r),
-// d = -c.z its depth, d' >= d - r that of p; likewise y.
-glm::vec4 sphere_rect(glm::vec3 center, float r, const FrameParams& frame) {
-    const glm::vec3 c = glm::vec3(frame.model_view * glm::vec4(center, 1.0f));
-    const float d = -c.z;
-    if (!(d - r > 0.0f)) return {0, 0, frame.viewport.x, frame.viewport.y};
-    const glm::vec2 scale(frame.projection[0][0], frame.projection[1][1]);  // symmetric perspective
-    const glm::vec2 at = glm::vec2(c) / d;
-    const glm::vec2 reach = r * (1.0f + glm::abs(at)) / (d - r);
-    const glm::vec2 lo = ((at - reach) * scale * 0.5f + 0.5f) * frame.viewport;
-    const glm::vec2 hi = ((at + reach) * scale * 0.5f + 0.5f) * frame.viewport;
-    return {lo.x, lo.y, hi.x, hi.y};
-}
-
-bool overlaps(glm::vec4 a, glm::ivec4 b) {
-    return a.x <= float(b.x + b.z) && a.z >= float(b.x) && a.y <= float(b.y + b.w) && a.w >= float(b.y);
-}
-
-}  // namespace
-
 BackFaceCulling back_face_culling(const BackFaceVisibility& visibility, const BoundingSphere& bounds,
                                   const MeshClusters& clusters, const FrameParams& frame) {
     BackFaceCulling out;
@@ -68,19 +44,7 @@ BackFaceCulling back_face_culling(const BackFaceVisibility& visibility, const Bo
     for (const glm::ivec4& r : out.hole_rects)
         lo = glm::min(lo, glm::ivec2(r.x, r.y)), hi = glm::max(hi, glm::ivec2(r.x + r.z, r.y + r.w));
     out.holes = {lo, hi - lo};
-    for (size_t c = 0; c < clusters.size(); ++c) {
-        const ClusterBounds& b = clusters.bounds[c];
-        if (classify_facing(b, frame.eye) == Facing::Front) continue;  // every face culled anyway
-        const glm::vec4 image = sphere_rect(b.center, b.radius, frame);
-        bool seen = false;
-        for (const glm::ivec4& r : out.hole_rects) seen = seen || overlaps(image, r);
-        if (!seen) continue;
-        const uint32_t first = clusters.first_face[c], count = clusters.first_face[c + 1] - first;
-        if (!out.back_runs.empty() && out.back_runs.back().first + out.back_runs.back().count == first)
-            out.back_runs.back().count += count;
-        else
-            out.back_runs.push_back({first, count});
-    }
+    out.back_runs = back_facing_runs_in(clusters, frame, out.hole_rects);
     return out;
 }
 

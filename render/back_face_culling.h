@@ -24,9 +24,8 @@ struct BackFaceCulling {
 
 // Culls when the mesh is cullable, the eye lies outside its bounding sphere,
 // and the holes' union covers at most half the image (else drawing back
-// faces in it would cost more than culling saves). back_runs: the clusters
-// not entirely front-facing (cluster_bounds.h) whose bounding sphere's image
-// meets a hole's rectangle.
+// faces in it would cost more than culling saves). back_runs:
+// back_facing_runs_in (render/cluster_culling.h) of the holes' rectangles.
 BackFaceCulling back_face_culling(const BackFaceVisibility& visibility, const BoundingSphere& bounds,
                                   const MeshClusters& clusters, const FrameParams& frame);
 

@@ -69,18 +69,20 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
 namespace {
 
 // The side and near planes of the clip volume, the sides widened by
-// `margin` (in NDC units), as model-space planes a.p + d >= 0 (Gribb and
-// Hartmann 2001). The far plane frames the whole model and is left out.
+// `margin` (in NDC units), or of the part of it over the NDC rectangle
+// [lo, hi], as model-space planes a.p + d >= 0 (Gribb and Hartmann 2001).
+// The far plane frames the whole model and is left out.
 struct Frustum {
     glm::vec4 planes[5];
 
-    Frustum(const glm::mat4& mvp, glm::vec2 margin) {
+    Frustum(const glm::mat4& mvp, glm::vec2 margin) : Frustum(mvp, -(1.0f + margin), 1.0f + margin) {}
+    Frustum(const glm::mat4& mvp, glm::vec2 lo, glm::vec2 hi) {
         auto row = [&](int i) { return glm::vec4(mvp[0][i], mvp[1][i], mvp[2][i], mvp[3][i]); };
         const glm::vec4 x = row(0), y = row(1), z = row(2), w = row(3);
-        planes[0] = w * (1 + margin.x) + x;  // x >= -(1 + m) w
-        planes[1] = w * (1 + margin.x) - x;  // x <= (1 + m) w
-        planes[2] = w * (1 + margin.y) + y;
-        planes[3] = w * (1 + margin.y) - y;
+        planes[0] = w * -lo.x + x;  // x >= lo.x w
+        planes[1] = w * hi.x - x;   // x <= hi.x w
+        planes[2] = w * -lo.y + y;
+        planes[3] = w * hi.y - y;
         planes[4] = w + z;  // in front of the near plane
     }
     bool may_touch(const ClusterBounds& b) const {
@@ -149,6 +151,24 @@ bool holds_level(float lo, float hi, const LevelSet& levels) {
 
 std::vector<FaceRun> front_surface_runs(const MeshClusters& clusters, const FrameParams& frame) {
     return visible_runs_where(clusters, frame, false, 0.0f, [](size_t) { return true; });
+}
+
+std::vector<FaceRun> back_facing_runs_in(const MeshClusters& clusters, const FrameParams& frame,
+                                         const std::vector<glm::ivec4>& rects) {
+    std::vector<Frustum> frusta;  // one a rectangle, its pixels' edges in NDC
+    for (const glm::ivec4& r : rects) {
+        const glm::vec2 lo = glm::vec2(r.x, r.y) / frame.viewport * 2.0f - 1.0f;
+        const glm::vec2 hi = glm::vec2(r.x + r.z, r.y + r.w) / frame.viewport * 2.0f - 1.0f;
+        frusta.emplace_back(frame.mvp, lo, hi);
+    }
+    std::vector<FaceRun> runs;
+    for (size_t c = 0; c < clusters.size(); ++c) {
+        const ClusterBounds& b = clusters.bounds[c];
+        if (classify_facing(b, frame.eye) == Facing::Front) continue;  // every face culled anyway
+        if (std::any_of(frusta.begin(), frusta.end(), [&](const Frustum& f) { return f.may_touch(b); }))
+            append_cluster(runs, clusters, c);
+    }
+    return runs;
 }
 
 // The shaders compare float values with these bounds: a margin well above their rounding.

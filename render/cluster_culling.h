@@ -27,6 +27,8 @@
 #include "render/frame_params.h"
 #include "render/render_settings.h"
 
+#include <glm/vec4.hpp>
+
 #include <cstdint>
 #include <vector>
 
@@ -62,6 +64,11 @@ struct FaceRun {
 // only the clusters in view that are not entirely back-facing: the others'
 // faces would all be clipped or culled, after their vertices were shaded.
 std::vector<FaceRun> front_surface_runs(const MeshClusters& clusters, const FrameParams& frame);
+// Its back faces then come from the clusters that are not entirely
+// front-facing and reach into one of these pixel rectangles (x, y, width,
+// height) of the view: those whose back faces a hole there may show.
+std::vector<FaceRun> back_facing_runs_in(const MeshClusters& clusters, const FrameParams& frame,
+                                         const std::vector<glm::ivec4>& rects);
 
 // The runs of faces the contour pass must draw for this frame. margin_px:
 // how far outside the image a line may still cover pixels inside it;
