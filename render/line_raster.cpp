@@ -15,24 +15,6 @@ constexpr int kBandRows = 16;
 
 float camera_distance(float window_depth, glm::vec2 dp) { return dp.y / (window_depth * 2.0f - 1.0f + dp.x); }
 
-// The quad segment_quads_vert.glsl draws for a segment: its centre line
-// extended by r at both ends, r to either side.
-struct Quad {
-    glm::vec2 a, dir, nrm;
-    float len, r;
-};
-
-Quad quad_of(const WindowSegment& s, float r) {
-    Quad q;
-    q.a = glm::vec2(s.a);
-    const glm::vec2 d = glm::vec2(s.b) - q.a;
-    q.len = glm::length(d);
-    q.dir = q.len > 1e-6f ? d / q.len : glm::vec2(1, 0);
-    q.nrm = glm::vec2(-q.dir.y, q.dir.x);
-    q.r = r;
-    return q;
-}
-
 // Narrows [lo, hi] to the x where lo_c <= u.(x, y) - u.a <= hi_c on row y.
 void clip_row(glm::vec2 u, glm::vec2 a, float lo_c, float hi_c, float y, float& lo, float& hi) {
     const float base = glm::dot(u, a) - u.y * y;  // u.x x must lie in [lo_c + base, hi_c + base]
@@ -45,25 +27,28 @@ void clip_row(glm::vec2 u, glm::vec2 a, float lo_c, float hi_c, float y, float& 
     lo = std::max(lo, x0), hi = std::min(hi, x1);
 }
 
-// A segment's constants for lines_frag.glsl, computed once, not per pixel.
-struct Prepared {
+// A segment's constants, computed once, not per pixel.
+struct Shape {
     glm::vec2 a, ab;
     float len2, inv_len2, len;
-    float reach;  // w/2 + 1/2: no coverage farther from the centre line
+    glm::vec2 dir, nrm;  // unit along and across the segment ((1, 0) along a point)
+    float reach;         // w/2 + 1/2: lines_frag.glsl gives no coverage farther from the centre line
 };
 
-Prepared prepare(const WindowSegment& s, const LineRasterParams& o) {
-    Prepared g;
+Shape shape_of(const WindowSegment& s, const LineRasterParams& o) {
+    Shape g;
     g.a = glm::vec2(s.a), g.ab = glm::vec2(s.b) - g.a;
     g.len2 = glm::dot(g.ab, g.ab);
     g.inv_len2 = g.len2 > 1e-12f ? 1.0f / g.len2 : 0.0f;
     g.len = std::sqrt(g.len2);
+    g.dir = g.len > 1e-6f ? g.ab / g.len : glm::vec2(1, 0);
+    g.nrm = glm::vec2(-g.dir.y, g.dir.x);
     g.reach = 0.5f * o.line_width + 0.5f;
     return g;
 }
 
 // lines_frag.glsl for one pixel centre p (not on the surface): the coverage to max-blend, 0 for none.
-float pixel_ink(const WindowSegment& s, const Prepared& g, glm::vec2 p, const std::vector<float>& depth,
+float pixel_ink(const WindowSegment& s, const Shape& g, glm::vec2 p, const std::vector<float>& depth,
                 const LineRasterParams& o) {
     const glm::vec2 pa = p - g.a;
     const float along = glm::dot(pa, g.ab) * g.inv_len2;
@@ -103,22 +88,21 @@ float pixel_ink(const WindowSegment& s, const Prepared& g, glm::vec2 p, const st
     return shade * coverage * (s.alpha.x + (s.alpha.y - s.alpha.x) * t);
 }
 
-// The rows [first_row, end_row) of one segment's quad.
+// The rows [first_row, end_row) of one segment's capsule.
 void draw_rows(const WindowSegment& s, int first_row, int end_row, const std::vector<float>& depth,
                const LineRasterParams& o, uint8_t* coverage) {
-    const Quad q = quad_of(s, 0.5f * o.line_width + 0.5f);
-    const Prepared g = prepare(s, o);
+    const Shape g = shape_of(s, o);
     for (int y = first_row; y < end_row; ++y) {
         const float py = float(y) + 0.5f;
         // The row's span of the capsule within r of the centre line (convex: one
         // interval), the union of the band along the segment and the end discs;
         // the pixels of the quad outside it get no coverage.
         float lo = -1e30f, hi = 1e30f;
-        clip_row(q.nrm, q.a, -q.r, q.r, py, lo, hi);
-        clip_row(q.dir, q.a, 0.0f, q.len, py, lo, hi);
+        clip_row(g.nrm, g.a, -g.reach, g.reach, py, lo, hi);
+        clip_row(g.dir, g.a, 0.0f, g.len, py, lo, hi);
         if (!(lo <= hi)) lo = 1e30f, hi = -1e30f;  // the band misses the row: only the discs remain
         for (const glm::vec2 end : {glm::vec2(s.a), glm::vec2(s.b)}) {
-            const float dy = py - end.y, h2 = q.r * q.r - dy * dy;
+            const float dy = py - end.y, h2 = g.reach * g.reach - dy * dy;
             if (!(h2 > 0.0f)) continue;
             const float h = std::sqrt(h2);
             lo = std::min(lo, end.x - h), hi = std::max(hi, end.x + h);

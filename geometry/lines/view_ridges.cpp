@@ -61,8 +61,8 @@ ViewCurvatureOf<F> view_curvature_of(F k1, F k2, F Ca, F Cb, F Cc, F Cd, F nx, F
     // A = Q^T Q (symmetric), its largest eigenvalue q1 and eigenvector t1.
     const F A00 = Q00 * Q00 + Q10 * Q10, A01 = Q00 * Q01 + Q10 * Q11, A11 = Q01 * Q01 + Q11 * Q11;
     const F mean = 0.5f * (A00 + A11);
-    const F half_gap = A11 - A00;
-    const F radius = root(A01 * A01 + 0.25f * half_gap * half_gap);
+    const F gap = A11 - A00;
+    const F radius = root(A01 * A01 + 0.25f * gap * gap);
     o.q1 = mean + radius;
     const F ea0 = A11 - o.q1, ea1 = -A01, eb0 = -A01, eb1 = A00 - o.q1;
     const auto use_b = eb0 * eb0 + eb1 * eb1 > ea0 * ea0 + ea1 * ea1;
