@@ -1,5 +1,7 @@
 #include "chain.h"
 
+#include <glm/vec2.hpp>
+
 #include <algorithm>
 #include <cstring>
 #include <utility>
@@ -25,20 +27,21 @@ PointKey key_of(glm::vec3 p) {
 }  // namespace
 
 std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
-    // Each end (segment * 2 + side) belongs to a point; ends of a point are
-    // listed together, in end order. Points are found in an open-addressing
-    // table on their position's bits, numbered as first met; a counting sort
-    // then lists each point's ends.
+    // Each end (segment * 2 + side) belongs to a point, found in an
+    // open-addressing table on its position's bits; a path goes on through a
+    // point only where exactly two ends meet, so each point keeps its number
+    // of ends and its first two.
     const size_t n = segments.size(), ne = 2 * n;
     // Scratch kept per thread: the CPU line pass chains a few segments at a
     // time, thousands of times a frame.
-    thread_local std::vector<uint32_t> table, end_point, first, ends, next_slot;
+    thread_local std::vector<uint32_t> table, end_point, degree;
+    thread_local std::vector<glm::uvec2> two_ends;
     thread_local std::vector<PointKey> point_keys;
     thread_local std::vector<char> used;
     size_t capacity = 16;
     while (capacity < 2 * ne) capacity *= 2;
     table.assign(capacity, 0);  // point + 1; 0: empty
-    point_keys.clear();
+    point_keys.clear(), degree.clear(), two_ends.clear();
     end_point.resize(ne);
     for (size_t e = 0; e < ne; ++e) {
         const PointKey k = key_of(e % 2 ? segments[e / 2].b : segments[e / 2].a);
@@ -47,23 +50,20 @@ std::vector<Polyline> chain_segments(const std::vector<LineSegment>& segments) {
         h ^= h >> 29;
         size_t slot = size_t(h) & (capacity - 1);
         while (table[slot] != 0 && !(point_keys[table[slot] - 1] == k)) slot = (slot + 1) & (capacity - 1);
-        if (table[slot] == 0) point_keys.push_back(k), table[slot] = uint32_t(point_keys.size());
-        end_point[e] = table[slot] - 1;
+        if (table[slot] == 0) {
+            point_keys.push_back(k), degree.push_back(0), two_ends.emplace_back(0);
+            table[slot] = uint32_t(point_keys.size());
+        }
+        const uint32_t p = table[slot] - 1;
+        end_point[e] = p;
+        if (degree[p] < 2) two_ends[p][int(degree[p])] = uint32_t(e);
+        ++degree[p];
     }
-    const size_t points = point_keys.size();
-    first.assign(points + 1, 0);
-    for (size_t e = 0; e < ne; ++e) ++first[end_point[e] + 1];
-    for (size_t p = 0; p < points; ++p) first[p + 1] += first[p];
-    next_slot.assign(first.begin(), first.end() - 1);
-    ends.resize(ne);
-    for (size_t e = 0; e < ne; ++e) ends[next_slot[end_point[e]]++] = uint32_t(e);
-    auto degree = [&](uint32_t p) { return first[p + 1] - first[p]; };
     // The other end at the same point, when the point joins exactly two ends.
     auto partner = [&](size_t e) -> long {
         const uint32_t p = end_point[e];
-        if (degree(p) != 2) return -1;
-        const uint32_t a = ends[first[p]], b = ends[first[p] + 1];
-        return long(a == e ? b : a);
+        if (degree[p] != 2) return -1;
+        return long(two_ends[p].x == e ? two_ends[p].y : two_ends[p].x);
     };
 
     used.assign(n, 0);
