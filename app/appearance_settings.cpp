@@ -230,7 +230,7 @@ const std::vector<AppearanceSetting>& appearance_settings() {
             a.vec3 = &R::line_color, a.color = true, a.label = "line colour";
             return a;
         }(),
-        switch_setting("msaa", "4x multisampling of the surface (default on)", &R::msaa, "4x MSAA"),
+        switch_setting("msaa", "4x multisampling of the surface (default on; unused by a white unlit surface on white, which has no edge to smooth)", &R::msaa, "4x MSAA"),
         {"line-extraction", "auto|gpu|cpu",
          "where the lines are extracted: on the CPU (fast on software GL such as llvmpipe), in geometry shaders "
          "(fast on GPUs), or auto: the CPU on software GL (default auto)",

@@ -48,11 +48,14 @@ void Renderer::ensure_buffers(int width, int height, bool msaa) {
 }
 
 FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderSettings& s, int w, int h) {
-    ensure_buffers(w, h, s.msaa);
+    // Multisampling smooths the surface's edges: a surface the colour of the
+    // background has none, and is drawn once per pixel (the same picture).
+    const bool msaa = s.msaa && !surface_is_background(s);
+    ensure_buffers(w, h, msaa);
     glViewport(0, 0, w, h);
 
     // 1. Surface, premultiplied over the background.
-    const Framebuffer& draw_fb = s.msaa ? surface_ms_fb_ : surface_fb_;
+    const Framebuffer& draw_fb = msaa ? surface_ms_fb_ : surface_fb_;
     glBindFramebuffer(GL_FRAMEBUFFER, draw_fb.id());
     const glm::vec4 bg = s.background;
     glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
@@ -68,7 +71,7 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
         if (any_lines && cpu_lines) line_pass_.begin_cpu_lines(*mesh_, frame, s);  // made while the surface is drawn
         surface_pass_.draw(*mesh_, frame, s);
     }
-    if (s.msaa) resolve(surface_ms_fb_, surface_fb_);
+    if (msaa) resolve(surface_ms_fb_, surface_fb_);
     const std::vector<Stroke> hatching = mesh_ && s.hatching != Hatching::None ? hatch_strokes(frame, s)
                                                                               : std::vector<Stroke>{};
     glViewport(0, 0, w, h);

@@ -4,6 +4,10 @@
 
 namespace kappa::render {
 
+bool surface_is_background(const RenderSettings& s) {
+    return s.shading == Shading::None && s.colormap == ColorMap::None && s.background == glm::vec4(1.0f);
+}
+
 SurfaceRenderer::SurfaceRenderer()
     : program_({{GL_VERTEX_SHADER, {"mesh_attributes.glsl", "colormap.glsl", "surface_vert.glsl"}},
                 {GL_FRAGMENT_SHADER, {"colormap.glsl", "surface_frag.glsl"}}}),
@@ -21,6 +25,8 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
                                                                                   : program_;
     p.use();
     p.set("u_mvp", frame.mvp);
+    const bool depth_only = surface_is_background(s);  // the colour stays the cleared white
+    if (depth_only) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     if (&p != &paper_) {
         p.set("u_normal_matrix", frame.normal_matrix);
         p.set("u_shading", int(s.shading));
@@ -29,10 +35,12 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         p.set("u_map_range", mesh.map_range(s.colormap));
     }
     const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
-    if (!culling.cull || !back_face_culling_) {
-        mesh.draw_triangles();
-        return;
-    }
+    if (!culling.cull || !back_face_culling_) mesh.draw_triangles();
+    else draw_culled(mesh, frame, culling);
+    if (depth_only) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void SurfaceRenderer::draw_culled(const MeshBuffers& mesh, const FrameParams& frame, const BackFaceCulling& culling) {
     // Front faces everywhere, back faces only where a hole is seen (geometry/back_faces.h).
     glEnable(GL_CULL_FACE);
     glFrontFace(culling.mirrored ? GL_CW : GL_CCW);
