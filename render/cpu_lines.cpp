@@ -261,9 +261,10 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     return lines;
 }
 
-void CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& s, GLuint depth_texture,
-                       GLuint coverage_texture) {
-    if (lines.segment_count == 0) return;
+InkArea CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& s,
+                          GLuint depth_texture, GLuint coverage_texture) {
+    InkArea ink;
+    if (lines.segment_count == 0) return ink;
     const int w = int(frame.viewport.x), h = int(frame.viewport.y);
     if (coverage_texture != 0) {
         // On the CPU: the surface's depth read back, the coverage written over the cleared target.
@@ -283,8 +284,10 @@ void CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const Re
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RED, GL_UNSIGNED_BYTE, coverage_.data());
         glBindTexture(GL_TEXTURE_2D, depth_texture);
-        return;
+        ink.rects = inked_rectangles(coverage_, w, h);
+        return ink;
     }
+    ink.anywhere = true;
     // Through the GL: four corners a segment.
     std::vector<QuadVertex> corners;
     corners.reserve(4 * lines.segment_count);
@@ -304,6 +307,7 @@ void CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const Re
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(QuadVertex)), corners.data(), GL_STREAM_DRAW);
     glDrawElements(GL_TRIANGLES, GLsizei(lines.segment_count * 6), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
+    return ink;
 }
 
 }  // namespace kappa::render

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace kappa::render {
 
@@ -146,6 +147,39 @@ void rasterize_lines(const std::vector<WindowSegment>& segments, const std::vect
         for (uint32_t i : in_band[b])
             draw_rows(segments[i], std::max(band_lo, rows[i].x), std::min(band_hi, rows[i].y), depth, o, coverage.data());
     });
+}
+
+std::vector<glm::ivec4> inked_rectangles(const std::vector<uint8_t>& coverage, int width, int height, int cell) {
+    std::vector<glm::ivec4> rects;
+    if (width <= 0 || height <= 0 || coverage.size() < size_t(width) * size_t(height)) return rects;
+    const int columns = (width + cell - 1) / cell;
+    std::vector<uint8_t> inked(static_cast<size_t>(columns));
+    for (int y0 = 0; y0 < height; y0 += cell) {
+        const int rows = std::min(cell, height - y0);
+        std::fill(inked.begin(), inked.end(), uint8_t(0));
+        for (int y = y0; y < y0 + rows; ++y) {
+            const uint8_t* row = coverage.data() + size_t(y) * size_t(width);
+            int x = 0;
+            for (; x + 8 <= width; x += 8) {  // eight pixels at a time: most are blank
+                uint64_t word;
+                std::memcpy(&word, row + x, 8);
+                if (word)
+                    for (int i = x; i < x + 8; ++i) inked[size_t(i / cell)] |= uint8_t(row[i] != 0);
+            }
+            for (; x < width; ++x) inked[size_t(x / cell)] |= uint8_t(row[x] != 0);
+        }
+        for (int c = 0; c < columns;) {
+            if (!inked[size_t(c)]) {
+                ++c;
+                continue;
+            }
+            const int first = c;
+            while (c < columns && inked[size_t(c)]) ++c;
+            const int x0 = first * cell, x1 = std::min(width, c * cell);
+            rects.push_back({x0, y0, x1 - x0, rows});
+        }
+    }
+    return rects;
 }
 
 }  // namespace kappa::render

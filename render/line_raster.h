@@ -18,6 +18,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -44,5 +45,20 @@ struct LineRasterParams {
 // size is wrong).
 void rasterize_lines(const std::vector<WindowSegment>& segments, const std::vector<float>& depth,
                      const LineRasterParams& params, std::vector<uint8_t>& coverage);
+
+// Where the line passes left ink in their coverage image: nowhere, anywhere
+// (a GL pass drew), or only inside `rects` (every line drawn on the CPU).
+struct InkArea {
+    bool anywhere = false;
+    std::vector<glm::ivec4> rects;  // x, y, width, height: pixels, the bottom row first
+    bool empty() const { return !anywhere && rects.empty(); }
+};
+
+// Rectangles (x, y, width, height; pixels, the bottom row first) that hold
+// every non-zero pixel of a width x height coverage image: the inked cells
+// of a grid of `cell` x `cell` pixels, each run of inked cells along a row
+// of the grid merged into one rectangle. Where to blend the lines over the
+// surface, instead of the whole image.
+std::vector<glm::ivec4> inked_rectangles(const std::vector<uint8_t>& coverage, int width, int height, int cell = 16);
 
 }  // namespace kappa::render

@@ -56,8 +56,9 @@ void LineRenderer::begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& f
     pending_cpu_lines_ = std::async(std::launch::async, [this, &mesh, frame, s] { return cpu_lines_.prepare(mesh, frame, s); });
 }
 
-void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_lines,
-                        GLuint surface_depth_texture, GLuint coverage_texture) {
+InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_lines,
+                           GLuint surface_depth_texture, GLuint coverage_texture) {
+    InkArea ink;
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
@@ -80,8 +81,9 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     if (cpu_lines) {
         // Every kind drawn by the four passes below.
         const CpuLines lines = pending_cpu_lines_.valid() ? pending_cpu_lines_.get() : cpu_lines_.prepare(mesh, frame, s);
-        cpu_lines_.draw(lines, frame, s, surface_depth_texture, coverage_texture);
+        ink = cpu_lines_.draw(lines, frame, s, surface_depth_texture, coverage_texture);
     } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
+        ink.anywhere = true;
         // The variant that can also draw highlights and Dw kr lines only when they are on.
         ShaderProgram& p = highlights || s.lines.dwkr ? isolines_highlights_ : isolines_;
         set_common(p, mesh, frame, s);
@@ -105,6 +107,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     }
     // Ridges, valleys, parabolic and mean-zero lines.
     if (s.lines.curvature_lines() && !cpu_lines) {
+        ink.anywhere = true;
         set_common(curvature_lines_, mesh, frame, s);
         curvature_lines_.set("u_parabolic", int(s.lines.parabolic));
         curvature_lines_.set("u_mean_zero", int(s.lines.mean_zero));
@@ -119,6 +122,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     }
     // Apparent ridges and principal highlights.
     if (s.lines.view_ridges() && !cpu_lines) {
+        ink.anywhere = true;
         set_common(view_ridges_, mesh, frame, s);
         view_ridges_.set("u_apparent_ridges", int(s.lines.apparent_ridges));
         view_ridges_.set("u_principal_highlights", int(s.lines.principal_highlights));
@@ -133,6 +137,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     // Isophotes (n.l levels, the light as the shading's, in model coordinates)
     // and topographic lines (height levels along y across the bounding sphere).
     if (s.lines.isophotes && s.isophote_count > 0 && !cpu_lines) {
+        ink.anywhere = true;
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 0);
         const glm::vec3 light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
@@ -144,6 +149,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         draw_culled([&] { return isophote_runs(mesh.clusters(), frame, s.hidden_lines, margin, light, levels); });
     }
     if (s.lines.topo && s.topo_count > 0 && !cpu_lines) {
+        ink.anywhere = true;
         set_common(level_lines_, mesh, frame, s);
         level_lines_.set("u_kind", 1);
         const LevelSet levels = topo_level_set(mesh.bounds().center.y, mesh.bounds().radius, s.topo_count);
@@ -154,6 +160,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
     }
     // Direction glyphs, 10 pixels long, at about one vertex per 600 pixels of the image.
     if (s.vectors != 0 && mesh.vertex_count() > 0) {
+        ink.anywhere = true;
         set_common(vectors_, mesh, frame, s);
         vectors_.set("u_vectors", s.vectors);
         vectors_.set("u_glyph", 10.0f);
@@ -162,6 +169,7 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         mesh.draw_points();
     }
     if ((s.lines.creases || contours) && mesh.crease_count() > 0) {
+        ink.anywhere = true;
         set_common(creases_, mesh, frame, s);
         creases_.set("u_creases", int(s.lines.creases));
         creases_.set("u_contours", int(contours));
@@ -169,12 +177,14 @@ void LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const
         mesh.draw_creases();
     }
     if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {
+        ink.anywhere = true;
         set_common(boundaries_, mesh, frame, s);
         mesh.draw_boundary_edges();
     }
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
+    return ink;
 }
 
 }  // namespace kappa::render

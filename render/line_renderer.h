@@ -25,7 +25,8 @@ public:
     // (begun by begin_cpu_lines, or made here). Into the bound framebuffer, cleared;
     // coverage_texture: 0, or its R8 colour texture, for the CPU to draw
     // those lines into itself (software GL, render/line_raster.h).
-    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
+    // Returns where lines were drawn.
+    InkArea draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
               GLuint surface_depth_texture, GLuint coverage_texture = 0);
 
 private:

@@ -82,8 +82,11 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     glClear(GL_COLOR_BUFFER_BIT);
     // On software GL the CPU draws its own lines too (render/line_raster.h).
     if (any_lines)
-        line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture(),
-                        cpu_line_raster_ ? lines_fb_.color_texture() : 0);
+        ink_ = line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture(),
+                               cpu_line_raster_ ? lines_fb_.color_texture() : 0);
+    else
+        ink_ = InkArea();
+    if (!hatching.empty()) ink_.anywhere = true;
     stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
 
     return frame;
@@ -94,7 +97,7 @@ void Renderer::render_offscreen(const Camera& camera, const RenderSettings& s, i
     // 3. The lines blended over the surface in its own framebuffer (no copy).
     glBindFramebuffer(GL_FRAMEBUFFER, surface_fb_.id());
     glViewport(0, 0, w, h);
-    compositor_.draw_over(lines_fb_.color_texture(), s.line_color);
+    compositor_.draw_over(lines_fb_.color_texture(), s.line_color, ink_);
     if (mesh_ && s.colorbar) colorbar_.draw(s.colormap, mesh_->map_range(s.colormap), w, h, s.background);
     glBindVertexArray(0);
 }

@@ -68,7 +68,7 @@ public:
 
 private:
     void ensure_buffers(int width, int height, bool msaa);
-    // Steps 1 and 2 of a frame: the surface into surface_fb_, the lines' coverage into lines_fb_.
+    // Steps 1 and 2 of a frame: the surface into surface_fb_, the lines' coverage into lines_fb_ (where: ink_).
     FrameParams draw_surface_and_lines(const Camera& camera, const RenderSettings& settings, int width, int height);
     std::vector<Stroke> hatch_strokes(const FrameParams& frame, const RenderSettings& settings);
 
@@ -82,6 +82,7 @@ private:
     Framebuffer surface_ms_fb_;  // multisampled surface (when MSAA is on)
     Framebuffer surface_fb_;     // colour + depth textures
     Framebuffer lines_fb_;
+    InkArea ink_;  // where this frame's lines are in lines_fb_
     bool software_gl_ = false;  // llvmpipe and the like: RenderSettings::line_extraction auto means CPU
     bool cpu_line_raster_ = false;  // software_gl_ unless set_cpu_line_raster
 };

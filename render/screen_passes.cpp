@@ -8,24 +8,56 @@
 namespace kappa::render {
 
 Compositor::Compositor()
-    : program_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"lines_over_frag.glsl"}}}) {
+    : program_({{GL_VERTEX_SHADER, {"fullscreen_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"lines_over_frag.glsl"}}}),
+      rects_({{GL_VERTEX_SHADER, {"screen_rects_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"lines_over_frag.glsl"}}}) {
     glGenVertexArrays(1, &vao_);
+    glGenVertexArrays(1, &rects_vao_);
+    glGenBuffers(1, &rects_buffer_);
+    glBindVertexArray(rects_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, rects_buffer_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+    glBindVertexArray(0);
 }
 
-Compositor::~Compositor() { glDeleteVertexArrays(1, &vao_); }
+Compositor::~Compositor() {
+    glDeleteVertexArrays(1, &vao_);
+    glDeleteVertexArrays(1, &rects_vao_);
+    glDeleteBuffers(1, &rects_buffer_);
+}
 
-void Compositor::draw_over(GLuint lines_texture, glm::vec3 line_color) {
+void Compositor::draw_over(GLuint lines_texture, glm::vec3 line_color, const InkArea& ink) {
+    if (ink.empty()) return;
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    program_.use();
-    program_.set("u_lines", 0);
-    program_.set("u_line_color", line_color);
+    ShaderProgram& p = ink.anywhere ? program_ : rects_;
+    p.use();
+    p.set("u_lines", 0);
+    p.set("u_line_color", line_color);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, lines_texture);
-    glBindVertexArray(vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (ink.anywhere) {
+        glBindVertexArray(vao_);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    } else {
+        // Two triangles a rectangle, in normalised device coordinates.
+        GLint viewport[4];
+        glGetIntegerv(GL_VIEWPORT, viewport);
+        const glm::vec2 to_ndc(2.0f / float(viewport[2]), 2.0f / float(viewport[3]));
+        std::vector<glm::vec2> corners;
+        corners.reserve(6 * ink.rects.size());
+        for (const glm::ivec4& r : ink.rects) {
+            const glm::vec2 lo = glm::vec2(r.x, r.y) * to_ndc - 1.0f, hi = glm::vec2(r.x + r.z, r.y + r.w) * to_ndc - 1.0f;
+            for (const glm::vec2 c : {lo, glm::vec2(hi.x, lo.y), hi, lo, hi, glm::vec2(lo.x, hi.y)}) corners.push_back(c);
+        }
+        glBindVertexArray(rects_vao_);
+        glBindBuffer(GL_ARRAY_BUFFER, rects_buffer_);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(glm::vec2)), corners.data(), GL_STREAM_DRAW);
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(corners.size()));
+    }
+    glBindVertexArray(0);
     glDisable(GL_BLEND);
 }
 

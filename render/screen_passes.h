@@ -2,6 +2,7 @@
 // colour bar.
 #pragma once
 
+#include "render/line_raster.h"
 #include "render/render_settings.h"
 #include "render/shader_program.h"
 #include "render/text_labels.h"
@@ -13,12 +14,16 @@ public:
     Compositor();
     ~Compositor();
     // Blends the lines over the surface in the bound framebuffer (same size
-    // as the texture): surface * (1 - lines) + line_color * lines.
-    void draw_over(GLuint lines_texture, glm::vec3 line_color);
+    // as the texture): surface * (1 - lines) + line_color * lines, where
+    // `ink` says lines may be (a software rasteriser shades every pixel it
+    // is given, even those it then discards).
+    void draw_over(GLuint lines_texture, glm::vec3 line_color, const InkArea& ink);
 
 private:
     ShaderProgram program_;
-    GLuint vao_ = 0;  // empty: the vertex shader makes the triangle
+    ShaderProgram rects_;  // the same over rectangles
+    GLuint vao_ = 0;       // empty: the vertex shader makes the triangle
+    GLuint rects_vao_ = 0, rects_buffer_ = 0;
 };
 
 class ColorBar {

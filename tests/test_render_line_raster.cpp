@@ -186,3 +186,37 @@ TEST_CASE("CPU line raster: non-finite and far-off segments draw nothing and sto
     CHECK(at(vertical, 40, 10) == 255);
     CHECK(at(vertical, 40, 30) == 255);
 }
+
+TEST_CASE("Inked rectangles hold every inked pixel and little else", "[render][line-raster]") {
+    // A 203 x 101 image (not a multiple of the 16 px cells): a few pixels and
+    // a diagonal line of ink, the last column and row included.
+    const int w = 203, h = 101;
+    std::vector<uint8_t> coverage(size_t(w) * size_t(h), 0);
+    auto ink = [&](int x, int y) { coverage[size_t(y) * size_t(w) + size_t(x)] = 1; };
+    ink(0, 0), ink(w - 1, h - 1), ink(100, 50), ink(17, 3);
+    for (int i = 0; i < 90; ++i) ink(30 + i, 5 + i);
+    const std::vector<glm::ivec4> rects = render::inked_rectangles(coverage, w, h);
+    std::vector<int> covered(coverage.size(), 0);
+    long area = 0;
+    for (const glm::ivec4& r : rects) {
+        REQUIRE(r.x >= 0);
+        REQUIRE(r.y >= 0);
+        REQUIRE(r.z > 0);
+        REQUIRE(r.w > 0);
+        REQUIRE(r.x + r.z <= w);
+        REQUIRE(r.y + r.w <= h);
+        area += long(r.z) * r.w;
+        for (int y = r.y; y < r.y + r.w; ++y)
+            for (int x = r.x; x < r.x + r.z; ++x) ++covered[size_t(y) * size_t(w) + size_t(x)];
+    }
+    size_t outside = 0, twice = 0;
+    for (size_t i = 0; i < coverage.size(); ++i) {
+        outside += coverage[i] && covered[i] == 0;
+        twice += covered[i] > 1;
+    }
+    CHECK(outside == 0);
+    CHECK(twice == 0);  // each pixel blended once
+    // The diagonal crosses at most 2 cells a cell row (7 rows), each lone pixel one cell.
+    CHECK(area <= (2 * 7 + 4) * 16 * 16);
+    CHECK(render::inked_rectangles(std::vector<uint8_t>(coverage.size(), 0), w, h).empty());
+}
