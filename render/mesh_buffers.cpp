@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
 #include <stdexcept>
 #include <vector>
 
@@ -68,6 +69,14 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
     cpu_mesh_.faces = std::move(ordered);
+    glGenVertexArrays(1, &position_vao_);
+    glBindVertexArray(position_vao_);
+    glGenBuffers(1, &position_buffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
 
     // Boundary edges share the vertex buffer through a second VAO.
     std::vector<glm::uvec2> edges = boundary_edges(mesh, fields.flags);
@@ -126,6 +135,9 @@ void MeshBuffers::upload(FieldUpload&& u) {
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
     keep_cpu_copy(u.vertices);
+    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(cpu_mesh_.positions.size() * sizeof(glm::vec3)),
+                    cpu_mesh_.positions.data());
     clusters_ = std::move(u.clusters);
     if (u.has_samples) {
         surface_area_ = u.surface_area;
@@ -140,10 +152,11 @@ void MeshBuffers::upload(FieldUpload&& u) {
 }
 
 MeshBuffers::~MeshBuffers() {
-    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, edge_buffer_, sample_buffer_, crease_buffer_};
-    glDeleteBuffers(5, buffers);
-    const GLuint arrays[] = {vao_, edge_vao_, sample_vao_, crease_vao_};
-    glDeleteVertexArrays(4, arrays);
+    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, position_buffer_, edge_buffer_, sample_buffer_,
+                              crease_buffer_};
+    glDeleteBuffers(GLsizei(std::size(buffers)), buffers);
+    const GLuint arrays[] = {vao_, position_vao_, edge_vao_, sample_vao_, crease_vao_};
+    glDeleteVertexArrays(GLsizei(std::size(arrays)), arrays);
 }
 
 void MeshBuffers::set_creases(const std::vector<glm::vec3>& end_points) {
@@ -176,19 +189,10 @@ void MeshBuffers::draw_points() const {
     glDrawArrays(GL_POINTS, 0, GLsizei(vertex_count_));
 }
 
-void MeshBuffers::draw_triangles() const {
-    glBindVertexArray(vao_);
-    glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);
-}
+namespace {
 
-void MeshBuffers::draw_hatch_samples(size_t count) const {
-    count = std::min(count, hatch_samples_);
-    if (count == 0) return;
-    glBindVertexArray(sample_vao_);
-    glDrawArrays(GL_POINTS, 0, GLsizei(count));
-}
-
-void MeshBuffers::draw_triangles(const std::vector<FaceRun>& runs) const {
+// glMultiDrawElements over runs of faces, in the bound VAO.
+void draw_runs(const std::vector<FaceRun>& runs) {
     if (runs.empty()) return;
     std::vector<GLsizei> counts(runs.size());
     std::vector<const void*> offsets(runs.size());
@@ -196,8 +200,36 @@ void MeshBuffers::draw_triangles(const std::vector<FaceRun>& runs) const {
         counts[i] = GLsizei(runs[i].count * 3);
         offsets[i] = reinterpret_cast<const void*>(size_t(runs[i].first) * sizeof(Face));
     }
-    glBindVertexArray(vao_);
     glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(runs.size()));
+}
+
+}  // namespace
+
+void MeshBuffers::draw_triangles() const {
+    glBindVertexArray(vao_);
+    glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);
+}
+
+void MeshBuffers::draw_triangles(const std::vector<FaceRun>& runs) const {
+    glBindVertexArray(vao_);
+    draw_runs(runs);
+}
+
+void MeshBuffers::draw_triangle_positions() const {
+    glBindVertexArray(position_vao_);
+    glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);
+}
+
+void MeshBuffers::draw_triangle_positions(const std::vector<FaceRun>& runs) const {
+    glBindVertexArray(position_vao_);
+    draw_runs(runs);
+}
+
+void MeshBuffers::draw_hatch_samples(size_t count) const {
+    count = std::min(count, hatch_samples_);
+    if (count == 0) return;
+    glBindVertexArray(sample_vao_);
+    glDrawArrays(GL_POINTS, 0, GLsizei(count));
 }
 
 void MeshBuffers::draw_boundary_edges() const {

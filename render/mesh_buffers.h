@@ -48,6 +48,11 @@ public:
     void draw_triangles() const;       // GL_TRIANGLES over every face
     void draw_points() const;          // GL_POINTS over every vertex
     void draw_triangles(const std::vector<FaceRun>& runs) const;  // the faces of these runs (cluster order)
+    // The same with only the positions as attribute 0, from a buffer of
+    // positions alone: a depth-only pass reads 12 bytes a vertex, not a
+    // whole GpuVertex record (a software GL fetches vertices on one thread).
+    void draw_triangle_positions() const;
+    void draw_triangle_positions(const std::vector<FaceRun>& runs) const;
     void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
     // Sharp edges: per end point its position and the normals of the edge's
     // two faces (3 vec3 each, 2 end points an edge; shaders/crease_vert.glsl).
@@ -82,6 +87,7 @@ public:
 private:
     void keep_cpu_copy(const std::vector<GpuVertex>& vertices);
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
+    GLuint position_vao_ = 0, position_buffer_ = 0;  // the positions alone, with triangle_buffer_
     GLuint edge_vao_ = 0, edge_buffer_ = 0;
     GLuint sample_vao_ = 0, sample_buffer_ = 0;
     GLuint crease_vao_ = 0, crease_buffer_ = 0;

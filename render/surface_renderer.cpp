@@ -35,22 +35,32 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         p.set("u_map_range", mesh.map_range(s.colormap));
     }
     const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
-    if (!culling.cull || !back_face_culling_) mesh.draw_triangles();
-    else draw_culled(mesh, frame, culling);
+    const bool positions_only = &p == &paper_;
+    if (!culling.cull || !back_face_culling_) {
+        if (positions_only) mesh.draw_triangle_positions();
+        else mesh.draw_triangles();
+    } else {
+        draw_culled(mesh, frame, culling, positions_only);
+    }
     if (depth_only) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void SurfaceRenderer::draw_culled(const MeshBuffers& mesh, const FrameParams& frame, const BackFaceCulling& culling) {
+void SurfaceRenderer::draw_culled(const MeshBuffers& mesh, const FrameParams& frame, const BackFaceCulling& culling,
+                                  bool positions_only) {
+    auto draw = [&](const std::vector<FaceRun>& runs) {
+        if (positions_only) mesh.draw_triangle_positions(runs);
+        else mesh.draw_triangles(runs);
+    };
     // Front faces everywhere, back faces only where a hole is seen (geometry/back_faces.h).
     glEnable(GL_CULL_FACE);
     glFrontFace(culling.mirrored ? GL_CW : GL_CCW);
     glCullFace(GL_BACK);
-    mesh.draw_triangles(front_surface_runs(mesh.clusters(), frame));
+    draw(front_surface_runs(mesh.clusters(), frame));
     if (!culling.back_runs.empty()) {
         glCullFace(GL_FRONT);
         glEnable(GL_SCISSOR_TEST);
         glScissor(culling.holes.x, culling.holes.y, culling.holes.z, culling.holes.w);
-        mesh.draw_triangles(culling.back_runs);
+        draw(culling.back_runs);
         glDisable(GL_SCISSOR_TEST);
     }
     glFrontFace(GL_CCW);

@@ -24,7 +24,9 @@ public:
     void set_back_face_culling(bool on) { back_face_culling_ = on; }  // for tests: off draws every face
 
 private:
-    void draw_culled(const MeshBuffers& mesh, const FrameParams& frame, const BackFaceCulling& culling);
+    // positions_only: through MeshBuffers::draw_triangle_positions (the paper program).
+    void draw_culled(const MeshBuffers& mesh, const FrameParams& frame, const BackFaceCulling& culling,
+                     bool positions_only);
 
     ShaderProgram program_;
     ShaderProgram plain_;  // without a colour map: reads only positions and normals

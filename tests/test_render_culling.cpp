@@ -210,16 +210,21 @@ TEST_CASE("culled back faces leave the depth of every face drawn", "[render][clu
         r.set_back_face_culling(true);
         r.render_offscreen(camera, s, 400, 300);
         const std::vector<float> culled = r.surface_depth();
+        // Paper draws from a buffer of positions alone (MeshBuffers::draw_triangle_positions).
         s.shading = render::Shading::None;
         r.render_offscreen(camera, s, 400, 300);
         const std::vector<float> paper = r.surface_depth();
+        r.set_back_face_culling(false);
+        r.render_offscreen(camera, s, 400, 300);
+        const std::vector<float> paper_every = r.surface_depth();
+        r.set_back_face_culling(true);
         size_t covered = 0, differ = 0, paper_differs = 0;
         float largest = 0;
         for (size_t i = 0; i < every.size(); ++i) {
             covered += every[i] < 1.0f;
             differ += culled[i] != every[i];
             largest = std::max(largest, std::fabs(culled[i] - every[i]));
-            paper_differs += paper[i] != culled[i];
+            paper_differs += paper[i] != culled[i] || paper_every[i] != every[i];
         }
         INFO("eye " << v.eye.x << " " << v.eye.y << " " << v.eye.z << (v.mirrored ? " mirrored" : "")
                     << (msaa ? ", 4x MSAA" : "") << ": "
