@@ -218,13 +218,19 @@ TEST_CASE("culled back faces leave the depth of every face drawn", "[render][clu
         r.render_offscreen(camera, s, 400, 300);
         const std::vector<float> paper_every = r.surface_depth();
         r.set_back_face_culling(true);
+        // Paper reads a buffer of positions of its own; a colour map reads the
+        // whole vertex records.
+        s.colormap = render::ColorMap::Mean;
+        r.render_offscreen(camera, s, 400, 300);
+        const std::vector<float> mapped = r.surface_depth();
+        s.colormap = render::ColorMap::None;
         size_t covered = 0, differ = 0, paper_differs = 0;
         float largest = 0;
         for (size_t i = 0; i < every.size(); ++i) {
             covered += every[i] < 1.0f;
             differ += culled[i] != every[i];
             largest = std::max(largest, std::fabs(culled[i] - every[i]));
-            paper_differs += paper[i] != culled[i] || paper_every[i] != every[i];
+            paper_differs += paper[i] != culled[i] || paper_every[i] != every[i] || mapped[i] != culled[i];
         }
         INFO("eye " << v.eye.x << " " << v.eye.y << " " << v.eye.z << (v.mirrored ? " mirrored" : "")
                     << (msaa ? ", 4x MSAA" : "") << ": "
