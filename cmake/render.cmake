@@ -39,6 +39,9 @@ target_link_libraries(kappa_render PUBLIC kappa_geometry kappa_glad OpenGL::Open
                       PRIVATE PNG::PNG stb)
 # Position-independent: the Python module (python/) links it into a shared object.
 set_target_properties(kappa_render PROPERTIES POSITION_INDEPENDENT_CODE ON)
+# The per-frame CPU line pass (extraction, merging, raster) at -O3 like the
+# geometry library: the same floating-point semantics, bit-identical output.
+target_compile_options(kappa_render PRIVATE $<$<CONFIG:Release>:-O3 -fno-semantic-interposition>)
 
 # --- the viewer's window and UI: GLFW (X11) and Dear ImGui ----------------------
 # Debian's libimgui.a already contains the GLFW and OpenGL3 backends (platform.md).
