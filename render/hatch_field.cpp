@@ -1,5 +1,8 @@
 #include "render/hatch_field.h"
 
+#include "geometry/parallel.h"
+#include "render/surface_renderer.h"
+
 #include <cmath>
 
 namespace kappa::render {
@@ -28,21 +31,28 @@ HatchField HatchFieldPass::draw(const MeshBuffers& mesh, const FrameParams& fram
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    mesh.draw_triangles();
+    draw_surface_triangles(mesh, frame, back_face_culling_, false);  // the surface pass's visible faces
     HatchField field;
     field.width = w, field.height = h;
     const Image bytes = fb_.read(false);  // top row first; shaders/hatch_field_frag.glsl's layout
     field.directions.resize(size_t(w) * size_t(h));
     field.tone.resize(field.directions.size());
-    for (int y = 0; y < h; ++y)
+    // Angles come as bytes: their cosines and sines from a table (the same values).
+    glm::vec2 unit[256];
+    for (int k = 0; k < 256; ++k) {
+        const float a = 2.0f * float(M_PI) * float(k) / 255.0f;
+        unit[k] = glm::vec2(std::cos(a), std::sin(a));
+    }
+    parallel_for(size_t(h), [&](size_t row) {
+        const int y = int(row);
         for (int x = 0; x < w; ++x) {
             const Rgba p = bytes.at(x, h - 1 - y);
             const size_t i = size_t(y) * size_t(w) + size_t(x);
             const float w8 = float(p.b) / 255.0f;
-            const float a1 = 2.0f * float(M_PI) * float(p.r) / 255.0f, a2 = 2.0f * float(M_PI) * float(p.g) / 255.0f;
-            field.directions[i] = w8 * glm::vec4(std::cos(a1), std::sin(a1), std::cos(a2), std::sin(a2));
+            field.directions[i] = w8 * glm::vec4(unit[p.r], unit[p.g]);
             field.tone[i] = p.a == 0 ? glm::vec2(0) : glm::vec2(float(p.a - 1) / 254.0f, 1.0f);
         }
+    }, 16);
     field.depth = fb_.read_depth();
     field.p22 = frame.projection[2][2], field.p32 = frame.projection[3][2];
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -30,10 +30,12 @@ public:
     HatchFieldPass();  // compiles the shaders (GL context current)
     // Leaves GL_FRAMEBUFFER unbound (0).
     HatchField draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+    void set_back_face_culling(bool on) { back_face_culling_ = on; }  // for tests: off draws every face
 
 private:
     ShaderProgram program_;
     Framebuffer fb_;
+    bool back_face_culling_ = true;
 };
 
 }  // namespace kappa::render

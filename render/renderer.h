@@ -62,9 +62,12 @@ public:
     // default on GPUs). For tests and benchmarks, to compare the two.
     void set_cpu_line_raster(bool on_cpu) { cpu_line_raster_ = on_cpu; }
     bool cpu_line_raster() const { return cpu_line_raster_; }
-    // Whether the surface pass may cull back faces where none can be seen
+    // Whether the surface and hatching-field passes may cull back faces where none can be seen
     // (render/back_face_culling.h; on by default). For tests and benchmarks.
-    void set_back_face_culling(bool on) { surface_pass_.set_back_face_culling(on); }
+    void set_back_face_culling(bool on) {
+        surface_pass_.set_back_face_culling(on);
+        hatch_field_.set_back_face_culling(on);
+    }
 
 private:
     void ensure_buffers(int width, int height, bool msaa);

@@ -34,19 +34,17 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         p.set("u_colormap", int(s.colormap));
         p.set("u_map_range", mesh.map_range(s.colormap));
     }
-    const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
-    const bool positions_only = &p == &paper_;
-    if (!culling.cull || !back_face_culling_) {
-        if (positions_only) mesh.draw_triangle_positions();
-        else mesh.draw_triangles();
-    } else {
-        draw_culled(mesh, frame, culling, positions_only);
-    }
+    draw_surface_triangles(mesh, frame, back_face_culling_, &p == &paper_);
     if (depth_only) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void SurfaceRenderer::draw_culled(const MeshBuffers& mesh, const FrameParams& frame, const BackFaceCulling& culling,
-                                  bool positions_only) {
+void draw_surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull, bool positions_only) {
+    const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
+    if (!culling.cull || !cull) {
+        if (positions_only) mesh.draw_triangle_positions();
+        else mesh.draw_triangles();
+        return;
+    }
     auto draw = [&](const std::vector<FaceRun>& runs) {
         if (positions_only) mesh.draw_triangle_positions(runs);
         else mesh.draw_triangles(runs);

@@ -2,7 +2,6 @@
 // Lambert, toon, hemisphere, Gooch; colour maps).
 #pragma once
 
-#include "render/back_face_culling.h"
 #include "render/frame_params.h"
 #include "render/mesh_buffers.h"
 #include "render/render_settings.h"
@@ -15,6 +14,14 @@ namespace kappa::render {
 // colour is then not written, and multisampling has no edge to smooth.
 bool surface_is_background(const RenderSettings& settings);
 
+// The triangles of the surface into the bound framebuffer, depth tested:
+// every face, or with `cull` (where render/back_face_culling.h allows it)
+// the front faces of the clusters in view and, scissored to the holes, the
+// back faces that can show through them: the same depth either way.
+// positions_only: from the buffer of positions alone
+// (MeshBuffers::draw_triangle_positions, the paper program).
+void draw_surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull, bool positions_only);
+
 class SurfaceRenderer {
 public:
     SurfaceRenderer();  // compiles the shaders (GL context current)
@@ -24,9 +31,6 @@ public:
     void set_back_face_culling(bool on) { back_face_culling_ = on; }  // for tests: off draws every face
 
 private:
-    // positions_only: through MeshBuffers::draw_triangle_positions (the paper program).
-    void draw_culled(const MeshBuffers& mesh, const FrameParams& frame, const BackFaceCulling& culling,
-                     bool positions_only);
 
     ShaderProgram program_;
     ShaderProgram plain_;  // without a colour map: reads only positions and normals

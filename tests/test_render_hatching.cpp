@@ -3,13 +3,18 @@
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
+#include "test_support.h"
 
+#include "geometry/feature_size.h"
+#include "geometry/io/mesh_io.h"
 #include "geometry/primitives.h"
+#include "geometry/surface_analysis.h"
 #include "render/ink_agreement.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace kappa;
@@ -178,4 +183,32 @@ TEST_CASE("hatching stays put when the view turns a little", "[render][hatching]
     INFO("ink within 2 px after turning 0.5 degrees: " << there << ", and back: " << back);
     CHECK(there > 0.85);
     CHECK(back > 0.85);
+}
+
+TEST_CASE("hatching strokes are the same with back faces culled from the field pass", "[render][hatching][clusters]") {
+    const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));  // holes in its base
+    const SurfaceFields fields = compute_surface_fields(bunny);
+    render::Renderer& r = test::renderer();
+    r.set_mesh(bunny, fields, feature_size(bunny, fields));
+    const auto bounds = render::bounding_sphere(bunny);
+    const glm::vec3 c = bounds.center;
+    const float d = 2.5f * bounds.radius;
+    render::RenderSettings s = test::lines_only({false, false, false, false});
+    s.hatching = render::Hatching::Cross;
+    for (const glm::vec3 eye : {c + glm::vec3(0, 0, d), c + glm::vec3(0.3f, -1.0f, 0.2f) * d}) {  // front; into the holes
+        const render::Camera camera = render::Camera::look_at(eye, c, glm::vec3(0, 1, 0), 30.0f);
+        r.set_back_face_culling(false);
+        const std::vector<render::Stroke> every = r.hatch_strokes(camera, s, 400, 300);
+        r.set_back_face_culling(true);
+        const std::vector<render::Stroke> culled = r.hatch_strokes(camera, s, 400, 300);
+        size_t points = 0, same = 0;
+        for (size_t i = 0; i < std::min(every.size(), culled.size()); ++i) {
+            points += every[i].points.size();
+            if (every[i].points == culled[i].points) same += every[i].points.size();
+        }
+        INFO(every.size() << " strokes, " << points << " points, " << same << " the same");
+        CHECK(every.size() > 50);
+        CHECK(culled.size() == every.size());
+        CHECK(same == points);
+    }
 }
