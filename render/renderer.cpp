@@ -3,6 +3,8 @@
 #include "render/frame_params.h"
 #include "render/hatch_streamlines.h"
 
+#include "geometry/parallel.h"
+
 #include <glm/geometric.hpp>
 
 #include <iterator>
@@ -113,29 +115,34 @@ std::vector<Stroke> Renderer::hatch_strokes(const Camera& camera, const RenderSe
 }
 
 std::vector<Stroke> Renderer::hatch_strokes(const FrameParams& frame, const RenderSettings& s) {
-    HatchParams params;
-    params.spacing = s.hatch_spacing;
-    std::vector<Stroke> strokes;
     const HatchField field = hatch_field_.draw(*mesh_, frame, s);
-    // Max: along d1; min: along d2; cross: d1, then d2 in the darker tones.
-    for (int family = 0; family < (s.hatching == Hatching::Cross ? 2 : 1); ++family) {
+    // Seeds: surface samples turned towards the eye and not hidden, in their fixed order.
+    std::vector<glm::vec2> seeds;
+    for (const MeshBuffers::Seed& seed : mesh_->hatch_seeds()) {
+        if (glm::dot(seed.normal, frame.eye - seed.position) <= 0) continue;
+        const glm::vec4 c = frame.mvp * glm::vec4(seed.position, 1.0f);
+        if (c.w <= 0) continue;
+        const glm::vec3 ndc = glm::vec3(c) / c.w;
+        const glm::vec2 p = (glm::vec2(ndc) * 0.5f + 0.5f) * frame.viewport;
+        if (p.x < 0 || p.y < 0 || p.x >= frame.viewport.x || p.y >= frame.viewport.y) continue;
+        const float drawn = field.depth[size_t(p.y) * size_t(field.width) + size_t(p.x)];
+        const float drawn_distance = field.p32 / (drawn * 2.0f - 1.0f + field.p22);
+        if (c.w > drawn_distance * 1.01f) continue;
+        seeds.push_back(p);
+    }
+    // Max: along d1; min: along d2; cross: d1, then d2 in the darker tones
+    // (the two families traced at once, joined in this order).
+    const size_t families = s.hatching == Hatching::Cross ? 2 : 1;
+    std::vector<std::vector<Stroke>> traced(families);
+    parallel_for_dynamic(families, [&](size_t family) {
+        HatchParams params;
+        params.spacing = s.hatch_spacing;
         params.family = s.hatching == Hatching::Min || family == 1 ? 1 : 0;
         params.cross_family = family == 1;
-        // Seeds: surface samples turned towards the eye and not hidden, in their fixed order.
-        std::vector<glm::vec2> seeds;
-        for (const MeshBuffers::Seed& seed : mesh_->hatch_seeds()) {
-            if (glm::dot(seed.normal, frame.eye - seed.position) <= 0) continue;
-            const glm::vec4 c = frame.mvp * glm::vec4(seed.position, 1.0f);
-            if (c.w <= 0) continue;
-            const glm::vec3 ndc = glm::vec3(c) / c.w;
-            const glm::vec2 p = (glm::vec2(ndc) * 0.5f + 0.5f) * frame.viewport;
-            if (p.x < 0 || p.y < 0 || p.x >= frame.viewport.x || p.y >= frame.viewport.y) continue;
-            const float drawn = field.depth[size_t(p.y) * size_t(field.width) + size_t(p.x)];
-            const float drawn_distance = field.p32 / (drawn * 2.0f - 1.0f + field.p22);
-            if (c.w > drawn_distance * 1.01f) continue;
-            seeds.push_back(p);
-        }
-        std::vector<Stroke> family_strokes = trace_hatching(field, seeds, params);
+        traced[family] = trace_hatching(field, seeds, params);
+    });
+    std::vector<Stroke> strokes;
+    for (std::vector<Stroke>& family_strokes : traced) {
         for (Stroke& st : family_strokes) st.width = s.hatch_stroke_width;
         strokes.insert(strokes.end(), std::make_move_iterator(family_strokes.begin()),
                        std::make_move_iterator(family_strokes.end()));
