@@ -261,20 +261,20 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     return lines;
 }
 
-InkArea CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& s,
-                          GLuint depth_texture, GLuint coverage_texture) {
+InkArea CpuLinePass::draw(const CpuLines& lines, const std::vector<WindowSegment>& strokes, const FrameParams& frame,
+                          const RenderSettings& s, GLuint depth_texture, GLuint coverage_texture) {
     InkArea ink;
-    if (lines.segment_count == 0) return ink;
     const int w = int(frame.viewport.x), h = int(frame.viewport.y);
-    if (coverage_texture != 0) {
+    if (coverage_texture != 0 && lines.segment_count + strokes.size() > 0) {
         // On the CPU: the surface's depth read back, the coverage written over the cleared target.
         depth_.resize(size_t(w) * size_t(h));
         glBindTexture(GL_TEXTURE_2D, depth_texture);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth_.data());
         std::vector<WindowSegment> all;
-        all.reserve(lines.segment_count);
+        all.reserve(lines.segment_count + strokes.size());
         for (const auto& b : lines.blocks) all.insert(all.end(), b.begin(), b.end());
+        all.insert(all.end(), strokes.begin(), strokes.end());
         LineRasterParams p;
         p.width = w, p.height = h, p.line_width = s.line_width, p.hidden_lines = s.hidden_lines;
         p.depth_params = glm::vec2(frame.projection[2][2], frame.projection[3][2]);
@@ -287,6 +287,7 @@ InkArea CpuLinePass::draw(const CpuLines& lines, const FrameParams& frame, const
         ink.rects = inked_rectangles(coverage_, w, h);
         return ink;
     }
+    if (lines.segment_count == 0) return ink;
     ink.anywhere = true;
     // Through the GL: four corners a segment.
     std::vector<QuadVertex> corners;

@@ -47,10 +47,11 @@ public:
     CpuLines prepare(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings) const;
     // Into the bound framebuffer, with the line passes' blending and depth
     // texture bound. coverage_texture: 0, or the bound framebuffer's R8
-    // colour texture, still cleared, to rasterise on the CPU into instead.
+    // colour texture, still cleared, to rasterise on the CPU into instead,
+    // with `strokes` (render/stroke_pass.h) too (they are ignored with 0).
     // Returns where it drew.
-    InkArea draw(const CpuLines& lines, const FrameParams& frame, const RenderSettings& settings, GLuint depth_texture,
-                 GLuint coverage_texture);
+    InkArea draw(const CpuLines& lines, const std::vector<WindowSegment>& strokes, const FrameParams& frame,
+                 const RenderSettings& settings, GLuint depth_texture, GLuint coverage_texture);
 
 private:
     void ensure_indices(size_t quads);  // the index buffer holds two triangles for at least `quads` quads

@@ -33,8 +33,11 @@ struct Shape {
     glm::vec2 a, ab;
     float len2, inv_len2, len;
     glm::vec2 dir, nrm;  // unit along and across the segment ((1, 0) along a point)
+    float width;         // pixels
     float reach;         // w/2 + 1/2: lines_frag.glsl gives no coverage farther from the centre line
 };
+
+float width_of(const WindowSegment& s, const LineRasterParams& o) { return s.width > 0.0f ? s.width : o.line_width; }
 
 Shape shape_of(const WindowSegment& s, const LineRasterParams& o) {
     Shape g;
@@ -44,7 +47,8 @@ Shape shape_of(const WindowSegment& s, const LineRasterParams& o) {
     g.len = std::sqrt(g.len2);
     g.dir = g.len > 1e-6f ? g.ab / g.len : glm::vec2(1, 0);
     g.nrm = glm::vec2(-g.dir.y, g.dir.x);
-    g.reach = 0.5f * o.line_width + 0.5f;
+    g.width = width_of(s, o);
+    g.reach = 0.5f * g.width + 0.5f;
     return g;
 }
 
@@ -67,9 +71,10 @@ float pixel_ink(const WindowSegment& s, const Shape& g, glm::vec2 p, const std::
         const float cy = x.y > 0.0f ? std::min(x.y, float(size.y - 1)) : 0.0f;
         return glm::ivec2(int(cx), int(cy));
     };
+    if (s.on_surface && depth_at(texel(p)) == 1.0f) return 0;
     if (s.exterior_only) {
         const glm::vec2 side = g.len2 > 1e-12f ? glm::vec2(-g.ab.y, g.ab.x) / g.len : glm::vec2(1, 0);
-        const float reach = 0.5f * o.line_width + 2.0f;
+        const float reach = 0.5f * g.width + 2.0f;
         if (depth_at(texel(q + side * reach)) < 1.0f && depth_at(texel(q - side * reach)) < 1.0f) return 0;
     }
     const glm::ivec2 qi = texel(q);
@@ -82,7 +87,7 @@ float pixel_ink(const WindowSegment& s, const Shape& g, glm::vec2 p, const std::
             for (int dx = -1; dx <= 1; ++dx)
                 farthest = std::max(farthest, depth_at(glm::clamp(qi + glm::ivec2(dx, dy), glm::ivec2(0), size - 1)));
         if (farthest < 1.0f && line_distance > camera_distance(farthest, o.depth_params) + s.tolerance) {
-            if (!o.hidden_lines || std::fmod(t * g.len, 10.0f) > 6.0f) return 0;
+            if (!o.hidden_lines || s.on_surface || std::fmod(t * g.len, 10.0f) > 6.0f) return 0;
             shade = 0.35f;
         }
     }
@@ -129,7 +134,6 @@ void rasterize_lines(const std::vector<WindowSegment>& segments, const std::vect
     if (coverage.size() != pixels) coverage.assign(pixels, 0);
     if (pixels == 0 || depth.size() != pixels) return;
     // Each segment's rows, and the segments of each band of rows.
-    const float r = 0.5f * o.line_width + 0.5f;
     const int bands = (o.height + kBandRows - 1) / kBandRows;
     std::vector<std::vector<uint32_t>> in_band(static_cast<size_t>(bands));
     std::vector<glm::ivec2> rows(segments.size());
@@ -137,6 +141,7 @@ void rasterize_lines(const std::vector<WindowSegment>& segments, const std::vect
         const WindowSegment& s = segments[i];
         if (!std::isfinite(s.a.x + s.a.y + s.a.z + s.b.x + s.b.y + s.b.z + s.alpha.x + s.alpha.y))
             continue;  // never drawn (the GL would drop it too)
+        const float r = 0.5f * width_of(s, o) + 0.5f;
         const float y_lo = std::min(s.a.y, s.b.y) - r, y_hi = std::max(s.a.y, s.b.y) + r;
         if (!(y_hi >= 0.0f && y_lo <= float(o.height))) continue;
         rows[i] = {std::max(0, int(std::floor(y_lo))), std::min(o.height, int(std::ceil(y_hi)) + 1)};

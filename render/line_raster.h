@@ -4,7 +4,8 @@
 // row of a segment's quad visits only the pixels inside it.
 //
 // Per pixel this is shaders/lines_frag.glsl for a segment of the CPU line
-// pass (shaders/segment_quads_vert.glsl: not on the surface): box-filtered
+// pass (shaders/segment_quads_vert.glsl) or a stroke (strokes_geom.glsl: on
+// the surface, drawn only where the pixel shows the surface): box-filtered
 // coverage of a line of constant width, visibility decided at the closest
 // point q of the centre line against the surface depth at q (then the
 // farthest of the 3x3 pixels around it, with the segment's tolerance), the
@@ -30,11 +31,13 @@ struct WindowSegment {
     glm::vec2 alpha;         // opacity at a and at b
     float tolerance = 0;     // model units a line may lie behind the surface and still be seen
     bool exterior_only = false;  // drawn only where one side is background (the exterior silhouette)
+    bool on_surface = false;     // a stroke: drawn only over the surface, never dashed
+    float width = 0;             // pixels; 0: LineRasterParams::line_width
 };
 
 struct LineRasterParams {
     int width = 0, height = 0;  // pixels
-    float line_width = 1;       // pixels
+    float line_width = 1;       // pixels, of the segments whose own width is 0
     glm::vec2 depth_params{0};  // (P[2][2], P[3][2]) of the projection: window depth -> camera distance
     bool hidden_lines = false;  // hidden parts dashed (6 px every 10) at 35% ink instead of not drawn
 };

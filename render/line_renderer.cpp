@@ -57,7 +57,8 @@ void LineRenderer::begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& f
 }
 
 InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_lines,
-                           GLuint surface_depth_texture, GLuint coverage_texture) {
+                           GLuint surface_depth_texture, GLuint coverage_texture,
+                           const std::vector<WindowSegment>& strokes) {
     InkArea ink;
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -81,7 +82,7 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     if (cpu_lines) {
         // Every kind drawn by the four passes below.
         const CpuLines lines = pending_cpu_lines_.valid() ? pending_cpu_lines_.get() : cpu_lines_.prepare(mesh, frame, s);
-        ink = cpu_lines_.draw(lines, frame, s, surface_depth_texture, coverage_texture);
+        ink = cpu_lines_.draw(lines, strokes, frame, s, surface_depth_texture, coverage_texture);
     } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
         ink.anywhere = true;
         // The variant that can also draw highlights and Dw kr lines only when they are on.

@@ -25,9 +25,12 @@ public:
     // (begun by begin_cpu_lines, or made here). Into the bound framebuffer, cleared;
     // coverage_texture: 0, or its R8 colour texture, for the CPU to draw
     // those lines into itself (software GL, render/line_raster.h).
+    // strokes (render/stroke_pass.h): drawn with the CPU lines when those are
+    // rasterised on the CPU (cpu_lines and coverage_texture), else ignored.
     // Returns where lines were drawn.
     InkArea draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
-              GLuint surface_depth_texture, GLuint coverage_texture = 0);
+                 GLuint surface_depth_texture, GLuint coverage_texture = 0,
+                 const std::vector<WindowSegment>& strokes = {});
 
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,

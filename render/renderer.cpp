@@ -82,14 +82,20 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     glBindFramebuffer(GL_FRAMEBUFFER, lines_fb_.id());
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    // On software GL the CPU draws its own lines too (render/line_raster.h).
-    if (any_lines)
+    // On software GL the CPU draws its own lines too, and the hatching
+    // strokes with them (render/line_raster.h).
+    const std::vector<WindowSegment> strokes = stroke_window_segments(hatching, s.hatch_stroke_width, frame);
+    const bool cpu_raster = cpu_line_raster_ && cpu_lines;
+    if (any_lines || (cpu_raster && !strokes.empty()))
         ink_ = line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture(),
-                               cpu_line_raster_ ? lines_fb_.color_texture() : 0);
+                               cpu_line_raster_ ? lines_fb_.color_texture() : 0,
+                               cpu_raster ? strokes : std::vector<WindowSegment>{});
     else
         ink_ = InkArea();
-    if (!hatching.empty()) ink_.anywhere = true;
-    stroke_pass_.draw(hatching, s.hatch_stroke_width, frame, surface_fb_.depth_texture());
+    if (!cpu_raster && !strokes.empty()) {
+        stroke_pass_.draw(strokes, frame, surface_fb_.depth_texture());
+        ink_.anywhere = true;
+    }
 
     return frame;
 }

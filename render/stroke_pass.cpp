@@ -44,9 +44,9 @@ StrokePass::~StrokePass() {
     glDeleteVertexArrays(1, &vao_);
 }
 
-void StrokePass::draw(const std::vector<Stroke>& strokes, float default_width, const FrameParams& frame,
-                      unsigned surface_depth_texture) {
-    std::vector<StrokeVertex> segments;
+std::vector<WindowSegment> stroke_window_segments(const std::vector<Stroke>& strokes, float default_width,
+                                                  const FrameParams& frame) {
+    std::vector<WindowSegment> out;
     const float height = frame.viewport.y;
     for (const Stroke& s : strokes) {
         float total = 0;
@@ -55,16 +55,30 @@ void StrokePass::draw(const std::vector<Stroke>& strokes, float default_width, c
         float along = 0;
         for (size_t i = 0; i + 1 < s.points.size(); ++i) {
             const float len = glm::distance(s.points[i], s.points[i + 1]);
-            const float w = tapered_width(width, s.taper, along + 0.5f * len, total);
-            segments.push_back({{s.points[i].x, height - s.points[i].y}, w, s.opacity[i]});
-            segments.push_back({{s.points[i + 1].x, height - s.points[i + 1].y}, w, s.opacity[i + 1]});
+            WindowSegment seg;
+            seg.a = {s.points[i].x, height - s.points[i].y, 0.0f};  // at the near plane: never hidden
+            seg.b = {s.points[i + 1].x, height - s.points[i + 1].y, 0.0f};
+            seg.alpha = {s.opacity[i], s.opacity[i + 1]};
+            seg.on_surface = true;
+            seg.width = tapered_width(width, s.taper, along + 0.5f * len, total);
+            out.push_back(seg);
             along += len;
         }
     }
+    return out;
+}
+
+void StrokePass::draw(const std::vector<WindowSegment>& segments, const FrameParams& frame,
+                      unsigned surface_depth_texture) {
     if (segments.empty()) return;
+    std::vector<StrokeVertex> ends;  // GL_LINES
+    ends.reserve(2 * segments.size());
+    for (const WindowSegment& seg : segments) {
+        ends.push_back({glm::vec2(seg.a), seg.width, seg.alpha.x});
+        ends.push_back({glm::vec2(seg.b), seg.width, seg.alpha.y});
+    }
     program_.use();
     program_.set("u_viewport", frame.viewport);
-    program_.set("u_line_width", default_width);
     program_.set("u_depth", 0);
     program_.set("u_depth_params", glm::vec2(frame.projection[2][2], frame.projection[3][2]));
     program_.set("u_hidden_lines", 0);
@@ -76,8 +90,8 @@ void StrokePass::draw(const std::vector<Stroke>& strokes, float default_width, c
     glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
     glBindVertexArray(vao_);
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(segments.size() * sizeof(StrokeVertex)), segments.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_LINES, 0, GLsizei(segments.size()));
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(ends.size() * sizeof(StrokeVertex)), ends.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_LINES, 0, GLsizei(ends.size()));
     glBindVertexArray(0);
     glDisable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);

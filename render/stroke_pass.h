@@ -5,6 +5,7 @@
 #pragma once
 
 #include "render/frame_params.h"
+#include "render/line_raster.h"
 #include "render/shader_program.h"
 #include "render/strokes.h"
 
@@ -16,6 +17,13 @@ namespace kappa::render {
 // 0.2 of it at the ends over `taper` pixels (render/vector_drawing.h uses the same).
 float tapered_width(float width, float taper, float s, float total);
 
+// The strokes' segments in window coordinates (y up; strokes come y down),
+// on the surface, each with its width (the stroke's own or the default,
+// thinned over its taper) and its ends' opacities: what StrokePass draws,
+// and what the CPU line raster (render/line_raster.h) draws on software GL.
+std::vector<WindowSegment> stroke_window_segments(const std::vector<Stroke>& strokes, float default_width,
+                                                  const FrameParams& frame);
+
 class StrokePass {
 public:
     StrokePass();   // compiles the shaders (GL context current)
@@ -23,8 +31,7 @@ public:
     StrokePass(const StrokePass&) = delete;
     StrokePass& operator=(const StrokePass&) = delete;
     // Into the bound framebuffer (blending as the line passes: GL_MAX).
-    void draw(const std::vector<Stroke>& strokes, float default_width, const FrameParams& frame,
-              unsigned surface_depth_texture);
+    void draw(const std::vector<WindowSegment>& segments, const FrameParams& frame, unsigned surface_depth_texture);
 
 private:
     ShaderProgram program_;

@@ -167,6 +167,34 @@ TEST_CASE("CPU line raster draws what the GL draws from the same segments", "[re
     test::renderer().set_cpu_line_raster(default_raster);
 }
 
+TEST_CASE("CPU line raster draws hatching strokes as the GL stroke pass does", "[render][line-raster][hatching]") {
+    const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    const float fs = feature_size(mesh, fields);
+    const auto camera = render::Camera::default_view(mesh, render::bounding_sphere(mesh), 30.0f, 4.0f / 3.0f);
+    const bool default_raster = test::renderer().cpu_line_raster();
+    // Strokes alone, and with contours (one raster for both).
+    for (const render::LineSelection lines :
+         {render::LineSelection{false, false, false, false}, render::LineSelection{true, false, false, false}}) {
+        render::RenderSettings s = test::lines_only(lines);
+        s.line_extraction = render::LineExtraction::Cpu;
+        s.hatching = render::Hatching::Cross;
+        test::renderer().set_cpu_line_raster(false);
+        const render::Image gl = test::render(mesh, fields, fs, camera, s, 640, 480);
+        test::renderer().set_cpu_line_raster(true);
+        const render::Image cpu = test::render(mesh, fields, fs, camera, s, 640, 480);
+        test::maybe_save(cpu, "hatching_cpu_raster");
+        size_t ink = test::count_ink(gl), differ = 0;
+        for (size_t i = 0; i < gl.pixels.size(); ++i) differ += std::abs(int(gl.pixels[i]) - int(cpu.pixels[i])) > 2;
+        INFO(render::to_string(lines) << ": " << ink << " ink pixels, " << differ << " channel values differ by more than 2");
+        CHECK(ink > 5000);
+        // As above: the same arithmetic, rounding apart; strokes stop at the
+        // model's outline on both (drawn only over the surface).
+        CHECK(double(differ) < 0.002 * double(ink));
+    }
+    test::renderer().set_cpu_line_raster(default_raster);
+}
+
 TEST_CASE("CPU line raster: non-finite and far-off segments draw nothing and stop", "[render][line-raster]") {
     const std::vector<float> empty(kW * kH, 1.0f);
     const float nan = std::nanf(""), inf = INFINITY;
