@@ -12,7 +12,7 @@ namespace kappa::render {
 
 FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                                  const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
-                                 bool hatch_samples) {
+                                 bool hatch_seeds) {
     const size_t n = mesh.vertex_count();
     if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
         fields.d2.size() != n || fields.dcurv.size() != n)
@@ -34,12 +34,11 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
                          own_fine ? fine_normals[v] : fields.normals[v]};
     }
     u.clusters = make_mesh_clusters(mesh, fields, clusters, feature_size, fine_normals);
-    if (hatch_samples) {
-        const SurfaceSamples seeds = sample_surface(mesh, fields, MeshBuffers::kHatchSamples);
-        u.has_samples = true;
-        u.surface_area = seeds.area;
-        u.samples.reserve(3 * seeds.points.size());
-        for (const SurfaceSample& p : seeds.points) u.samples.insert(u.samples.end(), {p.position, p.normal, p.direction});
+    if (hatch_seeds) {
+        const SurfaceSamples samples = sample_surface(mesh, fields, kHatchSeeds);
+        u.has_seeds = true;
+        u.seeds.reserve(samples.points.size());
+        for (const SurfaceSample& p : samples.points) u.seeds.push_back({p.position, p.normal});
     }
     return u;
 }

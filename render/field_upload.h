@@ -30,23 +30,30 @@ struct GpuVertex {
     glm::vec3 fine_normal;  // pixel-scale normal: contours and shading
 };
 
+// A seed of streamline hatching (render/hatch_streamlines.h): one of the
+// first kHatchSeeds surface samples (geometry/surface_samples.h, in their
+// random order: every prefix is a uniform sample).
+struct HatchSeed {
+    glm::vec3 position, normal;
+};
+constexpr size_t kHatchSeeds = 32768;
+
 struct FieldUpload {
     std::vector<GpuVertex> vertices;  // in FaceClusters::vertex_order
     MeshClusters clusters;
     std::array<float, 7> ranges{};  // robust colour-map range per ColorMap
     float feature_size = 1;
-    bool has_samples = false;        // false: keep the hatching seeds already uploaded
-    std::vector<glm::vec3> samples;  // position, normal, direction per hatching seed
-    double surface_area = 0;
+    bool has_seeds = false;        // false: keep the hatching seeds already uploaded
+    std::vector<HatchSeed> seeds;
 };
 
 // fields: one entry per vertex; fine_normals: empty (use fields.normals) or
 // one per vertex; clusters: the face clusters the triangles were uploaded
-// in (the vertex records come in its vertex_order); hatch_samples: also draw new hatching seeds (262144, slow on big meshes).
+// in (the vertex records come in its vertex_order); hatch_seeds: also draw new hatching seeds.
 // Throws std::invalid_argument when sizes do not match the mesh.
 FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                                  const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
-                                 bool hatch_samples);
+                                 bool hatch_seeds);
 
 // The crease pass's vertex data (MeshBuffers::set_creases): for each crease
 // of the split mesh, both end points, each with the unit normals of the

@@ -90,17 +90,6 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(glm::uvec2)), edges.data(), GL_STATIC_DRAW);
 
-    // Hatching seeds: position, normal, direction (shaders/hatch_vert.glsl).
-    glGenVertexArrays(1, &sample_vao_);
-    glBindVertexArray(sample_vao_);
-    glGenBuffers(1, &sample_buffer_);
-    glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(kHatchSamples * 3 * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
-    for (GLuint location = 0; location < 3; ++location) {
-        glEnableVertexAttribArray(location);
-        glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(glm::vec3),
-                              reinterpret_cast<const void*>(location * sizeof(glm::vec3)));
-    }
     glBindVertexArray(0);
     upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));
 }
@@ -139,23 +128,14 @@ void MeshBuffers::upload(FieldUpload&& u) {
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(cpu_mesh_.positions.size() * sizeof(glm::vec3)),
                     cpu_mesh_.positions.data());
     clusters_ = std::move(u.clusters);
-    if (u.has_samples) {
-        surface_area_ = u.surface_area;
-        hatch_samples_ = u.samples.size() / 3;
-        glBindBuffer(GL_ARRAY_BUFFER, sample_buffer_);
-        glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.samples.size() * sizeof(glm::vec3)), u.samples.data());
-        hatch_seeds_.clear();
-        for (size_t i = 0; i < std::min(hatch_samples_, kStreamlineSeeds); ++i)
-            hatch_seeds_.push_back({u.samples[3 * i], u.samples[3 * i + 1]});
-    }
+    if (u.has_seeds) hatch_seeds_ = std::move(u.seeds);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 MeshBuffers::~MeshBuffers() {
-    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, position_buffer_, edge_buffer_, sample_buffer_,
-                              crease_buffer_};
+    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, position_buffer_, edge_buffer_, crease_buffer_};
     glDeleteBuffers(GLsizei(std::size(buffers)), buffers);
-    const GLuint arrays[] = {vao_, position_vao_, edge_vao_, sample_vao_, crease_vao_};
+    const GLuint arrays[] = {vao_, position_vao_, edge_vao_, crease_vao_};
     glDeleteVertexArrays(GLsizei(std::size(arrays)), arrays);
 }
 
@@ -223,13 +203,6 @@ void MeshBuffers::draw_triangle_positions() const {
 void MeshBuffers::draw_triangle_positions(const std::vector<FaceRun>& runs) const {
     glBindVertexArray(position_vao_);
     draw_runs(runs);
-}
-
-void MeshBuffers::draw_hatch_samples(size_t count) const {
-    count = std::min(count, hatch_samples_);
-    if (count == 0) return;
-    glBindVertexArray(sample_vao_);
-    glDrawArrays(GL_POINTS, 0, GLsizei(count));
 }
 
 void MeshBuffers::draw_boundary_edges() const {

@@ -59,22 +59,13 @@ public:
     void set_creases(const std::vector<glm::vec3>& end_points);
     void draw_creases() const;  // GL_LINES over every crease
     size_t crease_count() const { return creases_; }
-    void draw_hatch_samples(size_t count) const;  // GL_POINTS over the first `count` surface samples
-
-    static constexpr size_t kHatchSamples = size_t(1) << 18;  // enough for dense hatching at 4x zoom
 
     size_t vertex_count() const { return vertex_count_; }
     size_t face_count() const { return face_count_; }
     size_t boundary_edge_count() const { return boundary_edges_; }
-    size_t hatch_sample_count() const { return hatch_samples_; }
-    // The first surface samples on the CPU (position, normal): the seeds of
-    // streamline hatching (render/hatch_streamlines.h), in their random order.
-    struct Seed {
-        glm::vec3 position, normal;
-    };
-    static constexpr size_t kStreamlineSeeds = 32768;
+    // The seeds of streamline hatching (render/hatch_streamlines.h), in their random order.
+    using Seed = HatchSeed;
     const std::vector<Seed>& hatch_seeds() const { return hatch_seeds_; }
-    double surface_area() const { return surface_area_; }
     float feature_size() const { return feature_size_; }
     const BoundingSphere& bounds() const { return bounds_; }
     // Whether back faces may be culled, and the holes to draw them in (geometry/back_faces.h).
@@ -89,12 +80,10 @@ private:
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
     GLuint position_vao_ = 0, position_buffer_ = 0;  // the positions alone, with triangle_buffer_
     GLuint edge_vao_ = 0, edge_buffer_ = 0;
-    GLuint sample_vao_ = 0, sample_buffer_ = 0;
     GLuint crease_vao_ = 0, crease_buffer_ = 0;
     size_t creases_ = 0;
-    size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0, hatch_samples_ = 0;
+    size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0;
     std::vector<Seed> hatch_seeds_;
-    double surface_area_ = 0;
     float feature_size_ = 1;
     BoundingSphere bounds_;
     BackFaceVisibility back_faces_;
