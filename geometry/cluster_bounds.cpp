@@ -1,5 +1,7 @@
 #include "cluster_bounds.h"
 
+#include "parallel.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -32,70 +34,74 @@ std::vector<ClusterBounds> compute_cluster_bounds(const Mesh& mesh, const std::v
                                                   const FaceClusters& clusters) {
     constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
     std::vector<ClusterBounds> out(clusters.size());
-    std::vector<uint32_t> seen(mesh.vertex_count(), none);  // seen[v] == c: v already listed for cluster c
-    std::vector<uint32_t> verts;                            // the current cluster's distinct vertices
-    std::vector<glm::vec3> dirs;                            // its unit normals (vertices and faces)
+    // Clusters are independent: ranges of them in parallel, each with its own scratch.
+    parallel_for_ranges(clusters.size(), [&](size_t first, size_t end) {
+        std::vector<uint32_t> seen(mesh.vertex_count(), none);  // seen[v] == c: v already listed for cluster c
+        std::vector<uint32_t> verts;                            // the current cluster's distinct vertices
+        std::vector<glm::vec3> dirs;                            // its unit normals (vertices and faces)
 
-    for (size_t c = 0; c < clusters.size(); ++c) {
-        verts.clear();
-        dirs.clear();
-        bool all_directions = false;
-        for (uint32_t i = clusters.cluster_start[c]; i < clusters.cluster_start[c + 1]; ++i) {
-            const Face& f = mesh.faces[clusters.face_order[i]];
-            for (int j = 0; j < 3; ++j)
-                if (seen[f[j]] != uint32_t(c)) {
-                    seen[f[j]] = uint32_t(c);
-                    verts.push_back(f[j]);
-                }
-            const glm::vec3 p0 = mesh.positions[f[0]];
-            glm::vec3 n;
-            if (unit_direction(glm::cross(mesh.positions[f[1]] - p0, mesh.positions[f[2]] - p0), n)) dirs.push_back(n);
-        }
+        for (size_t c = first; c < end; ++c) {
+            verts.clear();
+            dirs.clear();
+            bool all_directions = false;
+            for (uint32_t i = clusters.cluster_start[c]; i < clusters.cluster_start[c + 1]; ++i) {
+                const Face& f = mesh.faces[clusters.face_order[i]];
+                for (int j = 0; j < 3; ++j)
+                    if (seen[f[j]] != uint32_t(c)) {
+                        seen[f[j]] = uint32_t(c);
+                        verts.push_back(f[j]);
+                    }
+                const glm::vec3 p0 = mesh.positions[f[0]];
+                glm::vec3 n;
+                if (unit_direction(glm::cross(mesh.positions[f[1]] - p0, mesh.positions[f[2]] - p0), n))
+                    dirs.push_back(n);
+            }
 
-        glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-        glm::vec3 not_finite(0.0f);  // p - p: stays zero unless some p is inf or NaN (which min/max would skip)
-        for (uint32_t v : verts) {
-            const glm::vec3 p = mesh.positions[v];
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-            not_finite += p - p;
-            glm::vec3 n;
-            if (unit_direction(vertex_normals[v], n))
-                dirs.push_back(n);
-            else
-                all_directions = true;
-        }
-        ClusterBounds& b = out[c];
-        if (!(not_finite == glm::vec3(0.0f))) {
-            b.radius = std::numeric_limits<float>::infinity();  // and all directions: never culled
-            continue;
-        }
-        b.center = 0.5f * (lo + hi);
-        float r2 = 0;
-        for (uint32_t v : verts) {
-            const glm::vec3 e = mesh.positions[v] - b.center;
-            r2 = std::max(r2, glm::dot(e, e));
-        }
-        b.radius = std::sqrt(r2);
+            glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+            glm::vec3 not_finite(0.0f);  // p - p: stays zero unless some p is inf or NaN (which min/max would skip)
+            for (uint32_t v : verts) {
+                const glm::vec3 p = mesh.positions[v];
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+                not_finite += p - p;
+                glm::vec3 n;
+                if (unit_direction(vertex_normals[v], n))
+                    dirs.push_back(n);
+                else
+                    all_directions = true;
+            }
+            ClusterBounds& b = out[c];
+            if (!(not_finite == glm::vec3(0.0f))) {
+                b.radius = std::numeric_limits<float>::infinity();  // and all directions: never culled
+                continue;
+            }
+            b.center = 0.5f * (lo + hi);
+            float r2 = 0;
+            for (uint32_t v : verts) {
+                const glm::vec3 e = mesh.positions[v] - b.center;
+                r2 = std::max(r2, glm::dot(e, e));
+            }
+            b.radius = std::sqrt(r2);
 
-        // The cone: axis along the sum of the unit normals; the half-angle from
-        // the largest chord |n - axis| = 2 sin(angle / 2), which unlike
-        // dot(n, axis) stays accurate for the small angles that matter.
-        glm::vec3 sum(0.0f);
-        for (const glm::vec3& n : dirs) sum += n;
-        const float sum_len = glm::length(sum);
-        if (all_directions || dirs.empty() || !(sum_len > 1e-6f * float(dirs.size())) || !std::isfinite(sum_len))
-            continue;  // the default: all directions
-        b.axis = sum / sum_len;
-        float chord2 = 0;
-        for (const glm::vec3& n : dirs) {
-            const glm::vec3 e = n - b.axis;
-            chord2 = std::max(chord2, glm::dot(e, e));
+            // The cone: axis along the sum of the unit normals; the half-angle from
+            // the largest chord |n - axis| = 2 sin(angle / 2), which unlike
+            // dot(n, axis) stays accurate for the small angles that matter.
+            glm::vec3 sum(0.0f);
+            for (const glm::vec3& n : dirs) sum += n;
+            const float sum_len = glm::length(sum);
+            if (all_directions || dirs.empty() || !(sum_len > 1e-6f * float(dirs.size())) || !std::isfinite(sum_len))
+                continue;  // the default: all directions
+            b.axis = sum / sum_len;
+            float chord2 = 0;
+            for (const glm::vec3& n : dirs) {
+                const glm::vec3 e = n - b.axis;
+                chord2 = std::max(chord2, glm::dot(e, e));
+            }
+            const double half_angle = 2.0 * std::asin(std::min(1.0, 0.5 * std::sqrt(double(chord2))));
+            b.cos_angle = float(std::cos(half_angle));
+            b.sin_angle = float(std::sin(half_angle));
         }
-        const double half_angle = 2.0 * std::asin(std::min(1.0, 0.5 * std::sqrt(double(chord2))));
-        b.cos_angle = float(std::cos(half_angle));
-        b.sin_angle = float(std::sin(half_angle));
-    }
+    }, 64);
     return out;
 }
 
