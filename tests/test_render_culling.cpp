@@ -175,11 +175,8 @@ TEST_CASE("the uploaded mesh is the input's faces and fields, reordered", "[rend
 // mirrored, with and without MSAA; and white paper (positions only) leaves
 // the depth Lambert does.
 TEST_CASE("culled back faces leave the depth of every face drawn", "[render][clusters]") {
-    const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));  // holes in its base
-    const SurfaceFields fields = compute_surface_fields(bunny);
+    const render::BoundingSphere bounds = test::upload_shared_bunny();
     render::Renderer& r = test::renderer();
-    r.set_mesh(bunny, fields, feature_size(bunny, fields));
-    const auto bounds = render::bounding_sphere(bunny);
     const glm::vec3 c = bounds.center;
     const float d = 2.5f * bounds.radius;
     struct View {

@@ -1,6 +1,11 @@
 #include <algorithm>
 #include "test_render_fixtures.h"
 
+#include "test_support.h"
+
+#include "geometry/feature_size.h"
+#include "geometry/io/mesh_io.h"
+#include "geometry/surface_analysis.h"
 #include "render/egl_context.h"
 #include "render/ink_agreement.h"
 #include "render/png_writer.h"
@@ -17,6 +22,13 @@ render::Renderer& renderer() {
     static std::unique_ptr<render::HeadlessContext> context = render::HeadlessContext::create();
     static render::Renderer r;
     return r;
+}
+
+render::BoundingSphere upload_shared_bunny() {
+    const Mesh bunny = load_mesh(shared_mesh("bunny.ply"));
+    const SurfaceFields fields = compute_surface_fields(bunny);
+    renderer().set_mesh(bunny, fields, feature_size(bunny, fields));
+    return render::bounding_sphere(bunny);
 }
 
 namespace {

@@ -19,6 +19,10 @@ namespace kappa::test {
 // The process's headless context and a renderer on it (created on first use).
 render::Renderer& renderer();
 
+// bunny.ply (holes in its base: back faces show through them) and its
+// fields, uploaded to renderer(); returns its bounding sphere.
+render::BoundingSphere upload_shared_bunny();
+
 // Exact fields: sphere of radius R centred at the origin (n = p/R, k1 = k2 =
 // 1/R, C = 0); torus around z (R major, r minor: curvature 1/r along the
 // tube, cos v / (R + r cos v) along the big circle, c = C122 the only

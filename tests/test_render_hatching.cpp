@@ -3,12 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
-#include "test_support.h"
 
-#include "geometry/feature_size.h"
-#include "geometry/io/mesh_io.h"
 #include "geometry/primitives.h"
-#include "geometry/surface_analysis.h"
 #include "render/ink_agreement.h"
 
 #include <glm/geometric.hpp>
@@ -186,11 +182,8 @@ TEST_CASE("hatching stays put when the view turns a little", "[render][hatching]
 }
 
 TEST_CASE("hatching strokes are the same with back faces culled from the field pass", "[render][hatching][clusters]") {
-    const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));  // holes in its base
-    const SurfaceFields fields = compute_surface_fields(bunny);
+    const render::BoundingSphere bounds = test::upload_shared_bunny();
     render::Renderer& r = test::renderer();
-    r.set_mesh(bunny, fields, feature_size(bunny, fields));
-    const auto bounds = render::bounding_sphere(bunny);
     const glm::vec3 c = bounds.center;
     const float d = 2.5f * bounds.radius;
     render::RenderSettings s = test::lines_only({false, false, false, false});
