@@ -195,11 +195,6 @@ void MeshBuffers::draw_triangles(const std::vector<FaceRun>& runs) const {
     draw_runs(runs);
 }
 
-void MeshBuffers::draw_triangle_positions() const {
-    glBindVertexArray(position_vao_);
-    glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);
-}
-
 void MeshBuffers::draw_triangle_positions(const std::vector<FaceRun>& runs) const {
     glBindVertexArray(position_vao_);
     draw_runs(runs);

@@ -51,7 +51,6 @@ public:
     // The same with only the positions as attribute 0, from a buffer of
     // positions alone: a depth-only pass reads 12 bytes a vertex, not a
     // whole GpuVertex record (a software GL fetches vertices on one thread).
-    void draw_triangle_positions() const;
     void draw_triangle_positions(const std::vector<FaceRun>& runs) const;
     void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
     // Sharp edges: per end point its position and the normals of the edge's

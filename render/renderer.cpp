@@ -84,12 +84,11 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     glClear(GL_COLOR_BUFFER_BIT);
     // On software GL the CPU draws its own lines too, and the hatching
     // strokes with them (render/line_raster.h).
-    const std::vector<WindowSegment> strokes = stroke_window_segments(hatching, s.hatch_stroke_width, frame);
+    const std::vector<WindowSegment> strokes = stroke_window_segments(hatching, s.hatch_stroke_width, frame), none;
     const bool cpu_raster = cpu_line_raster_ && cpu_lines;
     if (any_lines || (cpu_raster && !strokes.empty()))
         ink_ = line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture(),
-                               cpu_line_raster_ ? lines_fb_.color_texture() : 0,
-                               cpu_raster ? strokes : std::vector<WindowSegment>{});
+                               cpu_line_raster_ ? lines_fb_.color_texture() : 0, cpu_raster ? strokes : none);
     else
         ink_ = InkArea();
     if (!cpu_raster && !strokes.empty()) {

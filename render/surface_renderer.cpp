@@ -39,16 +39,15 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
 }
 
 void draw_surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull, bool positions_only) {
-    const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
-    if (!culling.cull || !cull) {
-        if (positions_only) mesh.draw_triangle_positions();
-        else mesh.draw_triangles();
-        return;
-    }
     auto draw = [&](const std::vector<FaceRun>& runs) {
         if (positions_only) mesh.draw_triangle_positions(runs);
         else mesh.draw_triangles(runs);
     };
+    const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
+    if (!culling.cull || !cull) {
+        draw({{0, uint32_t(mesh.face_count())}});  // every face
+        return;
+    }
     // Front faces everywhere, back faces only where a hole is seen (geometry/back_faces.h).
     glEnable(GL_CULL_FACE);
     glFrontFace(culling.mirrored ? GL_CW : GL_CCW);

@@ -31,7 +31,6 @@ public:
     void set_back_face_culling(bool on) { back_face_culling_ = on; }  // for tests: off draws every face
 
 private:
-
     ShaderProgram program_;
     ShaderProgram plain_;  // without a colour map: reads only positions and normals
     ShaderProgram paper_;  // white paper, no colour map: positions only, nothing to interpolate
