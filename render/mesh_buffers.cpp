@@ -6,6 +6,7 @@
 #include "render/colormap.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <iterator>
 #include <stdexcept>
@@ -124,6 +125,8 @@ void MeshBuffers::upload(FieldUpload&& u) {
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
     keep_cpu_copy(u.vertices);
+    static std::atomic<uint64_t> uploads{0};
+    fields_version_ = ++uploads;
     glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(cpu_mesh_.positions.size() * sizeof(glm::vec3)),
                     cpu_mesh_.positions.data());

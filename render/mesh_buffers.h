@@ -42,6 +42,9 @@ public:
     const Mesh& cpu_mesh() const { return cpu_mesh_; }
     const SurfaceFields& cpu_fields() const { return cpu_fields_; }
     const std::vector<glm::vec3>& cpu_fine_normals() const { return cpu_fine_normals_; }
+    // A number that changes at every upload of fields, different for every
+    // MeshBuffers: for what is computed from the fields and kept.
+    uint64_t fields_version() const { return fields_version_; }
     MeshBuffers(const MeshBuffers&) = delete;
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 
@@ -92,6 +95,7 @@ private:
     Mesh cpu_mesh_;
     SurfaceFields cpu_fields_;
     std::vector<glm::vec3> cpu_fine_normals_;
+    uint64_t fields_version_ = 0;
 };
 
 }  // namespace kappa::render

@@ -68,3 +68,50 @@ TEST_CASE("CPU and geometry-shader extraction of lines draw the same image", "[r
         }
     }
 }
+
+// Ridges, valleys, parabolic, H = 0 and topographic lines are extracted once
+// per block of faces and kept between frames (render/view_independent_lines.h):
+// a view drawn after others is the same image as drawn first, and new fields
+// or new settings of those types are not drawn with the old lines.
+TEST_CASE("kept view-independent lines draw what a first frame draws", "[render][cpu-lines]") {
+    const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    const float fs = feature_size(mesh, fields);
+    const auto bounds = render::bounding_sphere(mesh);
+    const float r = bounds.radius;
+    const auto front = render::Camera::look_at(bounds.center + glm::vec3(0, 0, 3 * r), bounds.center, {0, 1, 0}, 30.0f);
+    const auto side = render::Camera::look_at(bounds.center + glm::vec3(3 * r, r, 0), bounds.center, {0, 1, 0}, 30.0f);
+    render::LineSelection lines{false, false, false, false};
+    lines.ridges = lines.valleys = lines.parabolic = lines.mean_zero = lines.topo = true;
+    render::RenderSettings s = test::lines_only(lines);
+    s.line_extraction = render::LineExtraction::Cpu;
+    render::Renderer& renderer = test::renderer();
+    auto first_frame = [&](const SurfaceFields& f, const render::RenderSettings& settings) {
+        renderer.set_mesh(mesh, f, fs);  // new buffers: nothing kept
+        return render::render_to_image(renderer, front, settings, 320, 240);
+    };
+
+    renderer.set_mesh(mesh, fields, fs);
+    render::render_to_image(renderer, side, s, 320, 240);
+    const render::Image after_side = render::render_to_image(renderer, front, s, 320, 240);
+    const render::Image first = first_frame(fields, s);
+    CHECK(test::count_ink(first) > 1000);
+    CHECK(after_side.pixels == first.pixels);
+
+    // Other thresholds and levels, after the lines of `s` were kept.
+    render::RenderSettings other = s;
+    other.rv_threshold = 3.0f, other.topo_count = 7, other.fade = false;
+    const render::Image changed = render::render_to_image(renderer, front, other, 320, 240);
+    CHECK(changed.pixels != first.pixels);
+    CHECK(changed.pixels == first_frame(fields, other).pixels);
+
+    // New fields for the same buffers (as a new --detail scale uploads).
+    SurfaceFields doubled = fields;
+    for (size_t v = 0; v < doubled.k1.size(); ++v) doubled.k1[v] *= 2.0f, doubled.k2[v] *= 2.0f;
+    renderer.set_mesh(mesh, fields, fs);
+    render::render_to_image(renderer, front, s, 320, 240);
+    renderer.update_fields(mesh, doubled, fs);
+    const render::Image updated = render::render_to_image(renderer, front, s, 320, 240);
+    CHECK(updated.pixels != first.pixels);
+    CHECK(updated.pixels == first_frame(doubled, s).pixels);
+}

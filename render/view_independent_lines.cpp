@@ -1,0 +1,73 @@
+#include "render/view_independent_lines.h"
+
+#include "geometry/lines/curvature_lines.h"
+#include "render/mesh_buffers.h"
+
+#include <algorithm>
+
+namespace kappa::render {
+
+bool is_view_independent(LineType t) {
+    return t == LineType::Ridge || t == LineType::Valley || t == LineType::Parabolic || t == LineType::MeanZero ||
+           t == LineType::Topo;
+}
+
+namespace {
+
+// Only the options these types read, with every other type off.
+LineExtractionOptions view_independent_options(const LineExtractionOptions& o) {
+    LineExtractionOptions k;
+    k.contours = k.suggestive = k.boundaries = k.creases = k.suggestive_highlights = k.dwkr = false;
+    k.isophotes = k.apparent_ridges = k.principal_highlights = false;
+    k.ridges = o.ridges, k.valleys = o.valleys, k.parabolic = o.parabolic, k.mean_zero = o.mean_zero;
+    k.topo = o.topo && o.topo_levels.count > 0;
+    k.rv_threshold = o.rv_threshold, k.feature_size = o.feature_size, k.fade = o.fade;
+    k.topo_levels = o.topo_levels;
+    return k;
+}
+
+bool same(const LineExtractionOptions& a, const LineExtractionOptions& b) {
+    return a.ridges == b.ridges && a.valleys == b.valleys && a.parabolic == b.parabolic && a.mean_zero == b.mean_zero &&
+           a.topo == b.topo && a.rv_threshold == b.rv_threshold && a.feature_size == b.feature_size &&
+           a.fade == b.fade && a.topo_levels.first == b.topo_levels.first &&
+           a.topo_levels.step == b.topo_levels.step && a.topo_levels.count == b.topo_levels.count;
+}
+
+}  // namespace
+
+void ViewIndependentLines::use(const MeshBuffers& mesh, const LineExtractionOptions& options) {
+    const LineExtractionOptions o = view_independent_options(options);
+    if (fields_version_ == mesh.fields_version() && same(o, options_) && !blocks_.empty()) return;
+    fields_version_ = mesh.fields_version();
+    options_ = o;
+    any_ = o.ridges || o.valleys || o.parabolic || o.mean_zero || o.topo;
+    const Mesh& m = mesh.cpu_mesh();
+    heights_.clear();
+    if (o.topo) {
+        heights_.resize(m.vertex_count());
+        for (size_t v = 0; v < heights_.size(); ++v) heights_[v] = m.positions[v].y;
+    }
+    blocks_.clear();
+    blocks_.resize((m.face_count() + kLineBlockFaces - 1) / kLineBlockFaces);
+}
+
+const ViewIndependentLines::BlockLines& ViewIndependentLines::block(uint32_t b, const Mesh& m,
+                                                                    const SurfaceFields& fields) {
+    std::unique_ptr<BlockLines>& kept = blocks_[b];
+    if (kept) return *kept;
+    thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
+    for (auto& segments : found) segments.clear();
+    const LevelValues levels{{}, heights_};
+    const uint32_t end = uint32_t(std::min<size_t>(m.face_count(), size_t(b + 1) * kLineBlockFaces));
+    for (uint32_t f = b * kLineBlockFaces; f < end; ++f) {
+        if (options_.ridges || options_.valleys || options_.parabolic || options_.mean_zero)
+            curvature_lines_of_face(m, m.faces[f], fields, options_, found);
+        if (options_.topo) level_lines_of_face(m, m.faces[f], levels, options_, found);
+    }
+    kept = std::make_unique<BlockLines>();
+    for (int type = 0; type < kLineTypeCount; ++type)
+        if (!found[size_t(type)].empty()) (*kept)[size_t(type)] = chain_segments(found[size_t(type)]);
+    return *kept;
+}
+
+}  // namespace kappa::render
