@@ -10,6 +10,7 @@
 #include "render/cluster_culling.h"
 #include "render/line_prefilter.h"
 #include "render/screen_merge.h"
+#include "render/view_independent_lines.h"
 
 #include <glm/matrix.hpp>
 
@@ -38,34 +39,32 @@ struct WindowParams {
     bool silhouette_only;   // contours only where they border the background
 };
 
-// Each segment of `lines`, merged on screen (render/screen_merge.h), in
-// window coordinates, appended to `out`; those with no ink, behind the eye
-// or beyond the depth range (the GL would clip their quad) left out.
-void append_segments(const ExtractedLines& lines, const ScreenMergeParams& merge, const WindowParams& w,
-                     std::vector<WindowSegment>& out) {
+// The segments of `polylines` (of one line type), merged on screen
+// (render/screen_merge.h), in window coordinates, appended to `out`; those
+// with no ink, behind the eye or beyond the depth range (the GL would clip
+// their quad) left out. merged: scratch.
+void append_polylines(LineType type, const std::vector<Polyline>& polylines, const ScreenMergeParams& merge,
+                      const WindowParams& w, std::vector<LineSegment>& merged, std::vector<WindowSegment>& out) {
     auto to_window = [&](glm::vec4 clip) {
         const glm::vec3 ndc = glm::vec3(clip) / clip.w;
         return glm::vec3((glm::vec2(ndc) * 0.5f + 0.5f) * w.viewport, ndc.z * 0.5f + 0.5f);
     };
-    std::vector<LineSegment> merged;
-    for (int type = 0; type < kLineTypeCount; ++type) {
-        // As isolines_geom.glsl: 2 occluding contours, 1 the other zero sets of view-dependent fields.
-        const int kind = type == int(LineType::Contour) ? 2 : is_view_isoline(LineType(type)) ? 1 : 0;
-        merged.clear();
-        for (const Polyline& line : chain_segments(lines[size_t(type)])) merge_on_screen(line, merge, merged);
-        for (const LineSegment& seg : merged) {
-            if (std::max(seg.opacity_a, seg.opacity_b) <= 0.0f) continue;
-            const glm::vec4 clip0 = w.mvp * glm::vec4(seg.a, 1.0f), clip1 = w.mvp * glm::vec4(seg.b, 1.0f);
-            if (clip0.w <= 0.0f || clip1.w <= 0.0f) continue;
-            WindowSegment ws;
-            ws.a = to_window(clip0), ws.b = to_window(clip1);
-            const float z = std::min(ws.a.z, ws.b.z);  // the quad's depth
-            if (!(z >= 0.0f && z <= 1.0f)) continue;
-            ws.alpha = {seg.opacity_a, seg.opacity_b};
-            ws.tolerance = std::max(seg.tolerance, kind > 0 ? w.scale_tolerance * std::max(clip0.w, clip1.w) : 0.0f);
-            ws.exterior_only = kind == 2 && w.silhouette_only;
-            out.push_back(ws);
-        }
+    // As isolines_geom.glsl: 2 occluding contours, 1 the other zero sets of view-dependent fields.
+    const int kind = type == LineType::Contour ? 2 : is_view_isoline(type) ? 1 : 0;
+    merged.clear();
+    for (const Polyline& line : polylines) merge_on_screen(line, merge, merged);
+    for (const LineSegment& seg : merged) {
+        if (std::max(seg.opacity_a, seg.opacity_b) <= 0.0f) continue;
+        const glm::vec4 clip0 = w.mvp * glm::vec4(seg.a, 1.0f), clip1 = w.mvp * glm::vec4(seg.b, 1.0f);
+        if (clip0.w <= 0.0f || clip1.w <= 0.0f) continue;
+        WindowSegment ws;
+        ws.a = to_window(clip0), ws.b = to_window(clip1);
+        const float z = std::min(ws.a.z, ws.b.z);  // the quad's depth
+        if (!(z >= 0.0f && z <= 1.0f)) continue;
+        ws.alpha = {seg.opacity_a, seg.opacity_b};
+        ws.tolerance = std::max(seg.tolerance, kind > 0 ? w.scale_tolerance * std::max(clip0.w, clip1.w) : 0.0f);
+        ws.exterior_only = kind == 2 && w.silhouette_only;
+        out.push_back(ws);
     }
 }
 
@@ -75,12 +74,13 @@ struct MaskedRun {
     uint8_t families;
 };
 
-// Faces [block * kBlockFaces, (block + 1) * kBlockFaces) and the runs in it
+// The runs of faces in block number `block` (render/view_independent_lines.h)
 // that need extraction. Blocks are fixed, whatever the culling keeps, so
 // segments are chained and merged on screen (render/screen_merge.h) the
 // same way with culling as without: culled clusters hold no lines.
-constexpr uint32_t kBlockFaces = 2048;
+constexpr uint32_t kBlockFaces = kLineBlockFaces;
 struct Block {
+    uint32_t block;
     std::vector<MaskedRun> runs;
 };
 
@@ -104,7 +104,7 @@ std::vector<Block> blocks_of(const std::vector<std::pair<uint8_t, std::vector<Fa
         const uint32_t next = i < events.size() ? events[i].first : at;
         for (uint32_t first = at; mask && first < next;) {
             const uint32_t block = first / kBlockFaces, end = std::min(next, (block + 1) * kBlockFaces);
-            if (block != out_block) out.emplace_back(), out_block = block;
+            if (block != out_block) out.push_back({block, {}}), out_block = block;
             out.back().runs.push_back({first, end - first, mask});
             first = end;
         }
@@ -180,8 +180,6 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     levels.light = glm::normalize(glm::transpose(frame.normal_matrix) * camera_light_direction(s, frame));
     levels.isophote_levels = isophote_level_set(s.isophote_count);
     levels.topo_levels = topo_level_set(mesh.bounds().center.y, mesh.bounds().radius, s.topo_count);
-    LineExtractionOptions iso = levels, topo = levels;
-    iso.topo = false, topo.isophotes = false;
 
     // Per family, the clusters that can hold its lines in this view (render/cluster_culling.h).
     std::vector<std::pair<uint8_t, std::vector<FaceRun>>> families;
@@ -210,20 +208,32 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
                                 return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels.topo_levels);
                             })});
     const std::vector<Block> blocks = blocks_of(families);
+    // Ridges, valleys, parabolic, H = 0 and topographic lines are kept
+    // between frames; the rest are extracted per frame.
+    view_independent_.use(mesh, levels);
+    constexpr uint8_t kept_families = kCurvatureLines | kTopo;
+    LineExtractionOptions per_view = levels;
+    per_view.ridges = per_view.valleys = per_view.parabolic = per_view.mean_zero = per_view.topo = false;
 
-    // Per vertex, once, at the vertices of the triangles some family will
-    // test (the rest of the mesh is culled): what the per-face tests read.
-    std::vector<uint8_t> needed(m.vertex_count(), 0);
+    // Per vertex, once, at the vertices of the triangles some per-view family
+    // will test (the rest of the mesh is culled): what the per-face tests read.
+    std::vector<uint8_t>& needed = scratch_.needed;
+    needed.assign(m.vertex_count(), 0);
     for (const Block& block : blocks)
         for (const MaskedRun& r : block.runs)
-            for (uint32_t f = r.first; f < r.first + r.count; ++f)
-                for (int k = 0; k < 3; ++k) needed[m.faces[f][k]] = 1;
-    const ViewQuantities q = view_lines ? compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs, needed)
-                                        : ViewQuantities{};
-    const std::vector<ViewRidgeVertex> ridge_vertices =
-        l.view_ridges() ? view_ridge_vertices(m, fields, frame.eye, fs, needed) : std::vector<ViewRidgeVertex>{};
-    const LevelValues level = o.isophotes || o.topo ? level_values(m, fields, levels) : LevelValues{};
-    const LinePrefilter prefilter = make_line_prefilter(m, fields, q, ridge_vertices, vr, level, levels, needed);
+            if (r.families & ~kept_families)
+                for (uint32_t f = r.first; f < r.first + r.count; ++f)
+                    for (int k = 0; k < 3; ++k) needed[m.faces[f][k]] = 1;
+    // Kept from frame to frame; only the entries at needed vertices are written and read.
+    ViewQuantities& q = scratch_.quantities;
+    if (view_lines) compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs, needed, q);
+    else q = {};
+    std::vector<ViewRidgeVertex>& ridge_vertices = scratch_.ridge_vertices;
+    if (l.view_ridges()) view_ridge_vertices(m, fields, frame.eye, fs, needed, ridge_vertices);
+    else ridge_vertices.clear();
+    const LevelValues level = o.isophotes ? level_values(m, fields, per_view) : LevelValues{};
+    LinePrefilter& prefilter = scratch_.prefilter;
+    make_line_prefilter(m, fields, q, ridge_vertices, vr, level, per_view, needed, prefilter);
 
     // One pass over the faces for every family, block by block, the blocks
     // taken by the workers as they come free; each block writes its own
@@ -238,22 +248,34 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     std::vector<std::vector<WindowSegment>> block_segments(blocks.size());
     parallel_for_dynamic(blocks.size(), [&](size_t i) {
         thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
+        thread_local std::vector<LineSegment> merged;
         for (auto& segments : found) segments.clear();
+        bool use_kept = false;
         for (const MaskedRun& r : blocks[i].runs) {
+            use_kept = use_kept || (r.families & kept_families);
+            const uint8_t wanted = r.families & ~kept_families;
+            if (!wanted) continue;
             for (uint32_t f = r.first; f < r.first + r.count; ++f) {
                 const Face& face = m.faces[f];
-                const uint8_t families = prefilter.families_on(face, r.families);
+                const uint8_t families = prefilter.families_on(face, wanted);
                 if (!families) continue;
                 if (families & kViewLines) extract_view_lines_of_face(m, face, fields, q, o, found);
-                if (families & kCurvatureLines) curvature_lines_of_face(m, face, fields, o, found);
                 if (families & kViewRidges)
                     view_ridges_of_face(m, face, fields, ridge_vertices, vr, found[int(LineType::ApparentRidge)],
                                         found[int(LineType::PrincipalHighlight)]);
-                if (families & kIsophotes) level_lines_of_face(m, face, level, iso, found);
-                if (families & kTopo) level_lines_of_face(m, face, level, topo, found);
+                if (families & kIsophotes) level_lines_of_face(m, face, level, per_view, found);
             }
         }
-        append_segments(found, merge, window, block_segments[i]);
+        const ViewIndependentLines::BlockLines* kept =
+            use_kept ? &view_independent_.block(blocks[i].block, m, fields) : nullptr;
+        for (int type = 0; type < kLineTypeCount; ++type) {
+            const LineType t = LineType(type);
+            if (is_view_independent(t)) {
+                if (kept) append_polylines(t, (*kept)[size_t(type)], merge, window, merged, block_segments[i]);
+            } else if (!found[size_t(type)].empty()) {
+                append_polylines(t, chain_segments(found[size_t(type)]), merge, window, merged, block_segments[i]);
+            }
+        }
     });
     CpuLines lines;
     lines.blocks = std::move(block_segments);

@@ -16,9 +16,13 @@
 
 #include "render/frame_params.h"
 #include "render/line_raster.h"
+#include "geometry/lines/view_quantities.h"
+#include "geometry/lines/view_ridges.h"
+#include "render/line_prefilter.h"
 #include "render/mesh_buffers.h"
 #include "render/render_settings.h"
 #include "render/shader_program.h"
+#include "render/view_independent_lines.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -61,6 +65,15 @@ private:
     size_t index_quads_ = 0;
     std::vector<float> depth_;       // read back for the CPU raster, kept between frames
     std::vector<uint8_t> coverage_;
+    mutable ViewIndependentLines view_independent_;  // kept between frames by prepare()
+    // prepare()'s per-vertex arrays, kept so that a frame need not clear fresh memory.
+    struct Scratch {
+        std::vector<uint8_t> needed;
+        ViewQuantities quantities;
+        std::vector<ViewRidgeVertex> ridge_vertices;
+        LinePrefilter prefilter;
+    };
+    mutable Scratch scratch_;
 };
 
 }  // namespace kappa::render

@@ -2,6 +2,8 @@
 
 #include "geometry/parallel.h"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,7 +11,7 @@ namespace kappa::render {
 
 namespace {
 
-enum Bit : uint32_t {
+enum Bit : uint64_t {
     kUnreliable = 1u << 0,
     kContourFront = 1u << 1,     // n.v > 0 with the contour normal
     kKrPositive = 1u << 2,       // kr sin^2(theta) > 0
@@ -23,13 +25,33 @@ enum Bit : uint32_t {
     kKmaxNegative = 1u << 10,
     kKmaxPositive = 1u << 11,
     kPrincipalStrong = 1u << 12, // |(kmax^2 - kmin^2) n.v fs^2| > ph_threshold
+    kTmUnsure = 1u << 13,        // a component of tm near zero (or NaN)
+    kDmaxUnsure = 1u << 14,      // a component of dmax near zero, or v.dmax zero (or NaN)
+    kVDmaxPositive = 1u << 15,   // v.dmax > 0, dmax turned (see turned_dmax_signs)
 };
 constexpr int kIsophoteShift = 16, kTopoShift = 24;
+constexpr int kTmSignShift = 32, kDmaxSignShift = 35;  // three bits each: x > 0, y > 0, z > 0
+
+// The signs of v's components as three bits, and whether one is so near zero
+// (or NaN) that a product of two could round to zero: two vectors with the
+// same bits and neither unsure have a positive dot product, in float too.
+uint64_t sign_bits(glm::vec3 v, bool& unsure) {
+    constexpr float kSmall = 1e-18f;  // a product of two is above the smallest normal float
+    unsure = unsure || !(std::fabs(v.x) >= kSmall) || !(std::fabs(v.y) >= kSmall) || !(std::fabs(v.z) >= kSmall);
+    return uint64_t(v.x > 0) | uint64_t(v.y > 0) << 1 | uint64_t(v.z > 0) << 2;
+}
+
+// dmax has no sign: -1 where its component of largest magnitude is negative, else 1.
+float dmax_turn(glm::vec3 d) {
+    const glm::vec3 a = glm::abs(d);
+    const float largest = a.x >= a.y && a.x >= a.z ? d.x : (a.y >= a.z ? d.y : d.z);
+    return largest < 0 ? -1.0f : 1.0f;
+}
 constexpr uint32_t kAnyBand = 255;  // too many levels, or a value on a level within rounding: always tested
 
 // How many of the levels first + k step (k < count) lie below v: a level
 // line crosses a triangle only where its vertices' bands differ.
-uint32_t band(float v, const LevelSet& levels) {
+uint64_t band(float v, const LevelSet& levels) {
     const float first = levels.first, step = levels.step;
     const int count = levels.count;
     if (count <= 0 || !(step > 0)) return 0;
@@ -37,16 +59,16 @@ uint32_t band(float v, const LevelSet& levels) {
     const float x = (v - first) / step;
     if (std::isnan(x)) return kAnyBand;  // always tested
     if (x <= -1.0f) return 0;            // below every level
-    if (x >= float(count) + 1.0f) return uint32_t(count);
+    if (x >= float(count) + 1.0f) return uint64_t(count);
     // floor(x) and the nearest integer by truncation, x > -1 here (no libm calls: this runs per vertex).
     const int below = x < 0.0f ? -1 : int(x);
     const float frac = x - float(below);
     const int nearest = frac < 0.5f ? below : below + 1;
     if (std::fabs(x - float(nearest)) < 1e-3f && nearest >= 0 && nearest < count) return kAnyBand;
-    return uint32_t(std::clamp(below + 1, 0, count));
+    return uint64_t(std::clamp(below + 1, 0, count));
 }
 
-bool bands_differ(uint32_t a, uint32_t b, uint32_t c, int shift) {
+bool bands_differ(uint64_t a, uint64_t b, uint64_t c, int shift) {
     a = (a >> shift) & 255, b = (b >> shift) & 255, c = (c >> shift) & 255;
     return a == kAnyBand || b == kAnyBand || c == kAnyBand || a != b || b != c;
 }
@@ -58,17 +80,26 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
                                   const LevelValues& levels, const LineExtractionOptions& o,
                                   const std::vector<uint8_t>& only) {
     LinePrefilter p;
+    p.bits.assign(mesh.vertex_count(), 0);
+    make_line_prefilter(mesh, fields, view, ridges, ridge_options, levels, o, only, p);
+    return p;
+}
+
+void make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
+                         const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
+                         const LevelValues& levels, const LineExtractionOptions& o, const std::vector<uint8_t>& only,
+                         LinePrefilter& p) {
     p.options = o;
     p.apparent_ridges = ridge_options.apparent_ridges;
     p.principal_highlights = ridge_options.principal_highlights;
     const size_t n = mesh.vertex_count();
-    p.bits.assign(n, 0);
+    p.bits.resize(n);
     const bool has_view = view.kr.size() == n, has_ridges = ridges.size() == n;
     const float rv_limit = o.rv_threshold / o.feature_size;
     const bool all = only.size() != n;
     parallel_for(n, [&](size_t v) {
         if (!all && !only[v]) return;
-        uint32_t b = fields.unreliable(v) ? uint32_t(kUnreliable) : 0u;
+        uint64_t b = fields.unreliable(v) ? uint64_t(kUnreliable) : 0u;
         if (has_view) {
             if (view.contour_ndotv[v] > 0) b |= kContourFront;
             if (view.kr[v] > 0) b |= kKrPositive;
@@ -89,6 +120,15 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
             if (r.kmax < 0) b |= kKmaxNegative;
             if (r.kmax > 0) b |= kKmaxPositive;
             if (std::fabs(r.ph_strength) - ridge_options.ph_threshold > 0) b |= kPrincipalStrong;
+            bool tm_unsure = false;
+            b |= sign_bits(r.dq1 * r.t1, tm_unsure) << kTmSignShift;  // tm as apparent_ridge computes it
+            if (tm_unsure) b |= kTmUnsure;
+            const float turn = dmax_turn(r.dmax);
+            const float v_dmax = turn * r.v_dmax;
+            bool dmax_unsure = !(v_dmax != 0.0f);
+            b |= sign_bits(turn * r.dmax, dmax_unsure) << kDmaxSignShift;
+            if (v_dmax > 0) b |= kVDmaxPositive;
+            if (dmax_unsure) b |= kDmaxUnsure;
         }
         if (levels.isophote.size() == n)
             b |= band(levels.isophote[v], o.isophote_levels) << kIsophoteShift;
@@ -96,12 +136,11 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
             b |= band(levels.height[v], o.topo_levels) << kTopoShift;
         p.bits[v] = b;
     });
-    return p;
 }
 
 uint8_t LinePrefilter::families_on(const Face& t, uint8_t wanted) const {
-    const uint32_t a = bits[t[0]], b = bits[t[1]], c = bits[t[2]];
-    const uint32_t any = a | b | c, differ = any & ~(a & b & c);
+    const uint64_t a = bits[t[0]], b = bits[t[1]], c = bits[t[2]];
+    const uint64_t any = a | b | c, differ = any & ~(a & b & c);
     const bool reliable = !(any & kUnreliable);
     const LineExtractionOptions& o = options;
     uint8_t families = 0;
@@ -116,9 +155,11 @@ uint8_t LinePrefilter::families_on(const Face& t, uint8_t wanted) const {
         ((o.parabolic && (differ & kGaussPositive)) || (o.mean_zero && (differ & kMeanPositive)) ||
          ((o.ridges || o.valleys) && (any & kRidgeStrong))))
         families |= kCurvatureLines;
+    constexpr uint64_t tm_signs = uint64_t(7) << kTmSignShift, dmax_signs = uint64_t(7) << kDmaxSignShift;
     if ((wanted & kViewRidges) && reliable &&
-        ((apparent_ridges && (any & kApparentStrong)) ||
-         (principal_highlights && !((any & kKmaxNegative) && (any & kKmaxPositive)) && (any & kPrincipalStrong))))
+        ((apparent_ridges && (any & kApparentStrong) && ((any & kTmUnsure) || (differ & tm_signs))) ||
+         (principal_highlights && !((any & kKmaxNegative) && (any & kKmaxPositive)) && (any & kPrincipalStrong) &&
+          ((any & kDmaxUnsure) || (differ & (dmax_signs | kVDmaxPositive))))))
         families |= kViewRidges;
     if ((wanted & kIsophotes) && bands_differ(a, b, c, kIsophoteShift)) families |= kIsophotes;
     if ((wanted & kTopo) && bands_differ(a, b, c, kTopoShift)) families |= kTopo;

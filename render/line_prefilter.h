@@ -10,6 +10,12 @@
 //     vertex above it (and n.v > 0 at one vertex, for the suggestive kinds);
 //   - principal highlights need kmax of one sign and unreliable vertices
 //     draw none of the curvature-based kinds;
+//   - an apparent ridge crosses an edge only where the vectors tm = D_t1 q1 t1
+//     at its ends have dot <= 0, and a principal highlight only where v.dmax
+//     changes sign with the triangle's dmax turned to agree: neither can
+//     happen when the three vectors (dmax turned so that its largest
+//     component is positive) have the same signs, component by component, none
+//     near zero, and (highlights) v.dmax so turned has one strict sign;
 //   - a level line crosses only where the vertices lie in different bands
 //     between consecutive levels.
 #pragma once
@@ -28,7 +34,7 @@ namespace kappa::render {
 enum LineFamily : uint8_t { kViewLines = 1, kCurvatureLines = 2, kViewRidges = 4, kIsophotes = 8, kTopo = 16 };
 
 struct LinePrefilter {
-    std::vector<uint32_t> bits;  // per vertex
+    std::vector<uint64_t> bits;  // per vertex
     LineExtractionOptions options;  // types on, thresholds
     bool apparent_ridges = false, principal_highlights = false;
     // The families of `wanted` that may have a line on triangle t.
@@ -44,5 +50,11 @@ LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields,
                                   const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
                                   const LevelValues& levels, const LineExtractionOptions& options,
                                   const std::vector<uint8_t>& only = {});
+// The same into `out`, kept by a caller that makes one every frame: its bits
+// are resized, not cleared, so where `only` is zero they keep what they held.
+void make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
+                         const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
+                         const LevelValues& levels, const LineExtractionOptions& options,
+                         const std::vector<uint8_t>& only, LinePrefilter& out);
 
 }  // namespace kappa::render

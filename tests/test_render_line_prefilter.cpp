@@ -69,12 +69,14 @@ TEST_CASE("the line prefilter keeps every triangle that holds a line and skips m
         CHECK(missed == 0);
         // The zero sets and level lines: a sign change (or a band change) at the vertices is nearly
         // always a crossing; the clipped kinds also keep triangles where the clip removes all. For
-        // apparent ridges the prefilter knows only the threshold (the maximum test needs the
-        // triangle's directions): it skips less, but still some.
+        // apparent ridges and principal highlights the prefilter knows the signs of the vectors the
+        // triangle's tests compare, not the tests (a maximum, a clip): it skips less (measured on
+        // these views: 2.4 and 2.8 triangles kept per triangle with lines).
         for (int f : {0, 1, 3, 4}) {
             INFO("family " << f << ": " << has_of[f] << " triangles with lines, " << kept_of[f] << " kept");
             CHECK(kept_of[f] < 2 * has_of[f] + 100);
         }
-        CHECK(kept_of[2] < mesh.face_count());
+        INFO("view ridges: " << has_of[2] << " triangles with lines, " << kept_of[2] << " kept");
+        CHECK(kept_of[2] < 3 * has_of[2] + 100);
     }
 }

@@ -12,10 +12,17 @@ namespace kappa {
 ViewQuantities compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
                                        const std::vector<glm::vec3>& contour_normals, glm::vec3 eye,
                                        float feature_size, const std::vector<uint8_t>& only) {
+    ViewQuantities q;
+    compute_view_quantities(mesh, fields, contour_normals, eye, feature_size, only, q);
+    return q;
+}
+
+void compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
+                             const std::vector<glm::vec3>& contour_normals, glm::vec3 eye, float feature_size,
+                             const std::vector<uint8_t>& only, ViewQuantities& q) {
     const size_t n = mesh.vertex_count();
     const bool all = only.size() != n;
     const bool own_contour_normals = contour_normals.size() == n;
-    ViewQuantities q;
     q.ndotv.resize(n), q.contour_ndotv.resize(n), q.kr.resize(n), q.sc_strength.resize(n);
     const float fs2 = feature_size * feature_size;
     parallel_for(n, [&](size_t i) {
@@ -37,7 +44,6 @@ ViewQuantities compute_view_quantities(const Mesh& mesh, const SurfaceFields& fi
         q.kr[i] = k1 * u * u + k2 * t * t;
         q.sc_strength[i] = (cwww - 2.0f * tau * tau * cot_theta) * fs2;
     });
-    return q;
 }
 
 }  // namespace kappa

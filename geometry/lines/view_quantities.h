@@ -33,5 +33,11 @@ struct ViewQuantities {
 ViewQuantities compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
                                        const std::vector<glm::vec3>& contour_normals, glm::vec3 eye,
                                        float feature_size, const std::vector<uint8_t>& only = {});
+// The same into `out`, kept by a caller that computes them every frame: its
+// arrays are resized, not cleared, so where `only` is zero they keep
+// whatever they held.
+void compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
+                             const std::vector<glm::vec3>& contour_normals, glm::vec3 eye, float feature_size,
+                             const std::vector<uint8_t>& only, ViewQuantities& out);
 
 }  // namespace kappa

@@ -211,6 +211,13 @@ void principal_highlight(const Face& t, const glm::vec3* positions, const Vertex
 std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye,
                                                  float fs, const std::vector<uint8_t>& only) {
     std::vector<ViewRidgeVertex> view(mesh.vertex_count());
+    view_ridge_vertices(mesh, f, eye, fs, only, view);
+    return view;
+}
+
+void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye, float fs,
+                         const std::vector<uint8_t>& only, std::vector<ViewRidgeVertex>& view) {
+    view.resize(mesh.vertex_count());
     const bool all = only.size() != view.size();
     auto needed = [&](size_t i) { return all || only[i] != 0; };
     // Vertex i from lane j of the view-dependent curvature.
@@ -262,7 +269,6 @@ std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const Surface
                   0);
         }
     });
-    return view;
 }
 
 void view_ridges_of_face(const Mesh& mesh, const Face& t, const SurfaceFields& f,

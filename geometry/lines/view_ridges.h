@@ -57,6 +57,10 @@ struct ViewRidgeVertex {
 // others are left zero).
 std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye,
                                                  float feature_size, const std::vector<uint8_t>& only = {});
+// The same into `out`, resized, not cleared: where `only` is zero it keeps
+// what it held (for a caller that keeps it from frame to frame).
+void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye, float feature_size,
+                         const std::vector<uint8_t>& only, std::vector<ViewRidgeVertex>& out);
 void view_ridges_of_face(const Mesh& mesh, const Face& face, const SurfaceFields& fields,
                          const std::vector<ViewRidgeVertex>& vertices, const ViewRidgeOptions& options,
                          std::vector<LineSegment>& apparent_ridges, std::vector<LineSegment>& principal_highlights);
