@@ -8,12 +8,16 @@
 //   alone; --detail: the fields at that scale for the view, as kappa render draws by default,
 //   instead of the raw 1-ring fields; --only: Lambert and the configurations whose name contains NAME,
 //   e.g. to profile one; --no-msaa: only the frames without multisampling)
+//   --line-pass: also the CPU line pass alone (render/cpu_lines.h: extraction, chaining and merging,
+//   no drawing and nothing else running), contours + suggestive and every line type, wall and CPU
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/surface_analysis.h"
 #include "render/detail_fields.h"
+#include "render/cpu_lines.h"
 #include "render/egl_context.h"
+#include "render/frame_params.h"
 #include "render/framebuffer.h"
 #include "render/renderer.h"
 
@@ -64,16 +68,37 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
     return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
 }
 
+// The CPU line pass alone: CpuLinePass::prepare, with the GL idle.
+FrameTime median_line_pass_ms(const render::MeshBuffers& mesh, const render::Camera& camera,
+                              const render::RenderSettings& s, int width, int height, int frames) {
+    const render::CpuLinePass pass;
+    const auto frame = render::FrameParams::make(camera, mesh.bounds(), width, height);
+    size_t segments = pass.prepare(mesh, frame, s).segment_count;  // warm-up: kept lines, scratch
+    std::vector<double> wall, cpu;
+    for (int i = 0; i < frames; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const double c0 = cpu_ms();
+        segments += pass.prepare(mesh, frame, s).segment_count;
+        cpu.push_back(cpu_ms() - c0);
+        wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    if (segments == 0) std::printf("  (no segments)\n");
+    std::sort(wall.begin(), wall.end());
+    std::sort(cpu.begin(), cpu.end());
+    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     int width = 1024, height = 768, frames = 20;
-    bool each = false, rtsc = false, msaa = true;
+    bool line_pass = false, each = false, rtsc = false, msaa = true;
     float detail = 0;
     std::string xf, only;
     std::vector<std::string> meshes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--each")) each = true;
+        else if (!std::strcmp(argv[i], "--line-pass")) line_pass = true;
         else if (!std::strcmp(argv[i], "--rtsc")) rtsc = true;
         else if (!std::strcmp(argv[i], "--no-msaa")) msaa = false;
         else if (!std::strcmp(argv[i], "--xf") && i + 1 < argc) xf = argv[++i];
@@ -178,6 +203,13 @@ int main(int argc, char** argv) {
                 std::printf("  every line type / contours+suggestive: wall %.2fx, cpu %.2fx\n",
                         times[every_row].wall_ms / times[1].wall_ms, times[every_row].cpu_ms / times[1].cpu_ms);
         }
+        if (line_pass)
+            for (const Config& c : {Config{"contours+suggestive", lines}, Config{"every line type", every}}) {
+                render::RenderSettings s = c.settings;
+                s.detail = detail;
+                const FrameTime t = median_line_pass_ms(*renderer.mesh(), camera, s, width, height, frames);
+                std::printf("  CPU line pass alone, %-20s wall %8.2f ms  cpu %8.2f ms\n", c.name, t.wall_ms, t.cpu_ms);
+            }
     }
     return 0;
 }
