@@ -17,6 +17,17 @@ struct ScreenPoint {
 
 }  // namespace
 
+float fast_atan2(float y, float x) {
+    const float ax = std::fabs(x), ay = std::fabs(y);
+    const float lo = std::min(ax, ay), hi = std::max(ax, ay);
+    const float a = hi > 0 ? lo / hi : 0.0f, s = a * a;
+    // Abramowitz and Stegun 4.4.49: |error| <= 1e-5 on [0, 1].
+    float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
+    if (ay > ax) r = 1.57079637f - r;
+    if (x < 0) r = 3.14159274f - r;
+    return y < 0 ? -r : r;
+}
+
 void merge_on_screen(const Polyline& line, const ScreenMergeParams& p, std::vector<LineSegment>& out) {
     const size_t n = line.points.size();
     if (n < 2) return;
@@ -40,14 +51,14 @@ void merge_on_screen(const Polyline& line, const ScreenMergeParams& p, std::vect
         size_t j = i + 1;
         if (s[i].in_front && s[j].in_front) {
             const glm::vec2 first = s[j].xy - s[i].xy;
-            const float base = std::atan2(first.y, first.x);
+            const float base = fast_atan2(first.y, first.x);
             float angle_lo = -1e30f, angle_hi = 1e30f, alpha_lo = -1e30f, alpha_hi = 1e30f, z_lo = -1e30f,
                   z_hi = 1e30f, farthest = 0;
             for (size_t k = i + 1; k < n && s[k].in_front; ++k) {
                 const glm::vec2 d = s[k].xy - s[i].xy;
                 const float dist = glm::length(d);
                 if (dist > p.max_length_px || dist + eps < farthest) break;
-                float angle = dist > 0 ? std::atan2(d.y, d.x) - base : 0.0f;
+                float angle = dist > 0 ? fast_atan2(d.y, d.x) - base : 0.0f;
                 if (angle > 3.14159265f) angle -= 6.28318531f;
                 if (angle < -3.14159265f) angle += 6.28318531f;
                 const float alpha_slope = dist > 0 ? (line.opacity[k] - line.opacity[i]) / dist : 0.0f;
@@ -60,7 +71,8 @@ void merge_on_screen(const Polyline& line, const ScreenMergeParams& p, std::vect
                 farthest = std::max(farthest, dist);
                 // k as a skipped point: narrow the intervals.
                 if (dist > eps) {
-                    const float half = std::asin(eps / dist);
+                    // asin(eps / dist) >= eps / dist, less the error of two angles (and rounding).
+                    const float half = std::max(eps / dist - (2.0f * kFastAtan2Error + 1e-6f), 0.0f);
                     angle_lo = std::max(angle_lo, angle - half), angle_hi = std::min(angle_hi, angle + half);
                 }
                 if (dist > 0) {

@@ -106,3 +106,17 @@ TEST_CASE("merging on screen follows opacity and stops at points behind the eye"
     for (const glm::vec3& x : through.points) behind += x.z >= 3.0f;
     CHECK(merged.size() >= behind);
 }
+
+TEST_CASE("fast_atan2 is within its stated error of atan2 in every direction", "[render][screen-merge]") {
+    double worst = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const double a = 6.283185307179586 * i / 200000.0 - 3.141592653589793;
+        for (const double r : {1e-3, 1.0, 700.0}) {
+            const float x = float(r * std::cos(a)), y = float(r * std::sin(a));
+            worst = std::max(worst, std::fabs(double(render::fast_atan2(y, x)) - std::atan2(double(y), double(x))));
+        }
+    }
+    INFO("largest error " << worst << " rad");
+    CHECK(worst <= double(render::kFastAtan2Error));
+    CHECK(render::fast_atan2(0.0f, 0.0f) == 0.0f);
+}
