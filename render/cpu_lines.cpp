@@ -224,16 +224,30 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
             if (r.families & ~kept_families)
                 for (uint32_t f = r.first; f < r.first + r.count; ++f)
                     for (int k = 0; k < 3; ++k) needed[m.faces[f][k]] = 1;
-    // Kept from frame to frame; only the entries at needed vertices are written and read.
+    // What the per-face tests read, kept from frame to frame (only the
+    // entries at needed vertices are written and read), made in one pass over
+    // the vertices, each range of them through every step while in cache.
+    const size_t n = m.vertex_count();
     ViewQuantities& q = scratch_.quantities;
-    if (view_lines) compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs, needed, q);
+    if (view_lines) q.ndotv.resize(n), q.contour_ndotv.resize(n), q.kr.resize(n), q.sc_strength.resize(n);
     else q = {};
     std::vector<ViewRidgeVertex>& ridge_vertices = scratch_.ridge_vertices;
-    if (l.view_ridges()) view_ridge_vertices(m, fields, frame.eye, fs, needed, ridge_vertices);
-    else ridge_vertices.clear();
-    const LevelValues level = o.isophotes ? level_values(m, fields, per_view) : LevelValues{};
+    ridge_vertices.resize(l.view_ridges() ? n : 0);
+    LevelValues& level = scratch_.levels;
+    begin_level_values(n, per_view, level);
     LinePrefilter& prefilter = scratch_.prefilter;
-    make_line_prefilter(m, fields, q, ridge_vertices, vr, level, per_view, needed, prefilter);
+    begin_line_prefilter(n, vr, per_view, prefilter);
+    parallel_for_ranges(n, [&](size_t begin, size_t end) {
+        constexpr size_t kInCache = 1024;  // vertices: about 200 bytes each are read and written
+        for (size_t first = begin; first < end; first += kInCache) {
+            const size_t last = std::min(end, first + kInCache);
+            if (view_lines)
+                compute_view_quantities(m, fields, mesh.cpu_fine_normals(), frame.eye, fs, needed, first, last, q);
+            if (l.view_ridges()) view_ridge_vertices(m, fields, frame.eye, fs, needed, first, last, ridge_vertices);
+            level_values(m, fields, per_view, first, last, level);
+            line_prefilter_bits(m, fields, q, ridge_vertices, level, needed, first, last, prefilter);
+        }
+    });
 
     // One pass over the faces for every family, block by block, the blocks
     // taken by the workers as they come free; each block writes its own

@@ -71,6 +71,7 @@ private:
         std::vector<uint8_t> needed;
         ViewQuantities quantities;
         std::vector<ViewRidgeVertex> ridge_vertices;
+        LevelValues levels;
         LinePrefilter prefilter;
     };
     mutable Scratch scratch_;

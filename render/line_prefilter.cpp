@@ -89,16 +89,30 @@ void make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const Vi
                          const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
                          const LevelValues& levels, const LineExtractionOptions& o, const std::vector<uint8_t>& only,
                          LinePrefilter& p) {
-    p.options = o;
-    p.apparent_ridges = ridge_options.apparent_ridges;
-    p.principal_highlights = ridge_options.principal_highlights;
+    begin_line_prefilter(mesh.vertex_count(), ridge_options, o, p);
+    parallel_for_ranges(mesh.vertex_count(), [&](size_t begin, size_t end) {
+        line_prefilter_bits(mesh, fields, view, ridges, levels, only, begin, end, p);
+    });
+}
+
+void begin_line_prefilter(size_t vertex_count, const ViewRidgeOptions& ridge_options,
+                          const LineExtractionOptions& options, LinePrefilter& p) {
+    p.options = options;
+    p.ridge_options = ridge_options;
+    p.bits.resize(vertex_count);
+}
+
+void line_prefilter_bits(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
+                         const std::vector<ViewRidgeVertex>& ridges, const LevelValues& levels,
+                         const std::vector<uint8_t>& only, size_t begin, size_t end, LinePrefilter& p) {
+    const LineExtractionOptions& o = p.options;
+    const ViewRidgeOptions& ridge_options = p.ridge_options;
     const size_t n = mesh.vertex_count();
-    p.bits.resize(n);
     const bool has_view = view.kr.size() == n, has_ridges = ridges.size() == n;
     const float rv_limit = o.rv_threshold / o.feature_size;
     const bool all = only.size() != n;
-    parallel_for(n, [&](size_t v) {
-        if (!all && !only[v]) return;
+    for (size_t v = begin; v < end; ++v) {
+        if (!all && !only[v]) continue;
         uint64_t b = fields.unreliable(v) ? uint64_t(kUnreliable) : 0u;
         if (has_view) {
             if (view.contour_ndotv[v] > 0) b |= kContourFront;
@@ -135,7 +149,7 @@ void make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const Vi
         if (levels.height.size() == n)
             b |= band(levels.height[v], o.topo_levels) << kTopoShift;
         p.bits[v] = b;
-    });
+    }
 }
 
 uint8_t LinePrefilter::families_on(const Face& t, uint8_t wanted) const {
@@ -157,8 +171,8 @@ uint8_t LinePrefilter::families_on(const Face& t, uint8_t wanted) const {
         families |= kCurvatureLines;
     constexpr uint64_t tm_signs = uint64_t(7) << kTmSignShift, dmax_signs = uint64_t(7) << kDmaxSignShift;
     if ((wanted & kViewRidges) && reliable &&
-        ((apparent_ridges && (any & kApparentStrong) && ((any & kTmUnsure) || (differ & tm_signs))) ||
-         (principal_highlights && !((any & kKmaxNegative) && (any & kKmaxPositive)) && (any & kPrincipalStrong) &&
+        ((ridge_options.apparent_ridges && (any & kApparentStrong) && ((any & kTmUnsure) || (differ & tm_signs))) ||
+         (ridge_options.principal_highlights && !((any & kKmaxNegative) && (any & kKmaxPositive)) && (any & kPrincipalStrong) &&
           ((any & kDmaxUnsure) || (differ & (dmax_signs | kVDmaxPositive))))))
         families |= kViewRidges;
     if ((wanted & kIsophotes) && bands_differ(a, b, c, kIsophoteShift)) families |= kIsophotes;

@@ -36,7 +36,7 @@ enum LineFamily : uint8_t { kViewLines = 1, kCurvatureLines = 2, kViewRidges = 4
 struct LinePrefilter {
     std::vector<uint64_t> bits;  // per vertex
     LineExtractionOptions options;  // types on, thresholds
-    bool apparent_ridges = false, principal_highlights = false;
+    ViewRidgeOptions ridge_options;
     // The families of `wanted` that may have a line on triangle t.
     uint8_t families_on(const Face& t, uint8_t wanted) const;
 };
@@ -56,5 +56,13 @@ void make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const Vi
                          const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
                          const LevelValues& levels, const LineExtractionOptions& options,
                          const std::vector<uint8_t>& only, LinePrefilter& out);
+// The same in steps, for a caller that runs several per-vertex passes over
+// one range of vertices while it is in cache: the options and the size,
+// then the bits of the vertices [begin, end) (any thread, disjoint ranges).
+void begin_line_prefilter(size_t vertex_count, const ViewRidgeOptions& ridge_options,
+                          const LineExtractionOptions& options, LinePrefilter& out);
+void line_prefilter_bits(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
+                         const std::vector<ViewRidgeVertex>& ridges, const LevelValues& levels,
+                         const std::vector<uint8_t>& only, size_t begin, size_t end, LinePrefilter& out);
 
 }  // namespace kappa::render

@@ -1,6 +1,7 @@
 #include "level_lines.h"
 
 #include "geometry/lines/zero_crossings.h"
+#include "geometry/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,15 +45,23 @@ LevelSet topo_level_set(float center_y, float radius, int count) {
 
 LevelValues level_values(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& o) {
     LevelValues v;
-    if (o.isophotes && o.isophote_levels.count > 0) {
-        v.isophote.resize(mesh.vertex_count());
-        for (size_t i = 0; i < v.isophote.size(); ++i) v.isophote[i] = glm::dot(fields.normals[i], o.light);
-    }
-    if (o.topo && o.topo_levels.count > 0) {
-        v.height.resize(mesh.vertex_count());
-        for (size_t i = 0; i < v.height.size(); ++i) v.height[i] = mesh.positions[i].y;
-    }
+    begin_level_values(mesh.vertex_count(), o, v);
+    parallel_for_ranges(mesh.vertex_count(),
+                        [&](size_t begin, size_t end) { level_values(mesh, fields, o, begin, end, v); });
     return v;
+}
+
+void begin_level_values(size_t n, const LineExtractionOptions& o, LevelValues& v) {
+    v.isophote.resize(o.isophotes && o.isophote_levels.count > 0 ? n : 0);
+    v.height.resize(o.topo && o.topo_levels.count > 0 ? n : 0);
+}
+
+void level_values(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& o, size_t begin,
+                  size_t end, LevelValues& v) {
+    if (!v.isophote.empty())
+        for (size_t i = begin; i < end; ++i) v.isophote[i] = glm::dot(fields.normals[i], o.light);
+    if (!v.height.empty())
+        for (size_t i = begin; i < end; ++i) v.height[i] = mesh.positions[i].y;
 }
 
 void level_lines_of_face(const Mesh& mesh, const Face& t, const LevelValues& v, const LineExtractionOptions& o,

@@ -19,6 +19,12 @@ struct LevelValues {
     std::vector<float> height;    // y (empty without topo)
 };
 LevelValues level_values(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& options);
+// The same in steps, for a caller that runs several per-vertex passes over
+// one range of vertices while it is in cache: arrays of the right size
+// (empty where off), then the values of the vertices [begin, end).
+void begin_level_values(size_t vertex_count, const LineExtractionOptions& options, LevelValues& out);
+void level_values(const Mesh& mesh, const SurfaceFields& fields, const LineExtractionOptions& options, size_t begin,
+                  size_t end, LevelValues& out);
 void level_lines_of_face(const Mesh& mesh, const Face& face, const LevelValues& values,
                          const LineExtractionOptions& options, ExtractedLines& lines);
 

@@ -21,12 +21,21 @@ void compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
                              const std::vector<glm::vec3>& contour_normals, glm::vec3 eye, float feature_size,
                              const std::vector<uint8_t>& only, ViewQuantities& q) {
     const size_t n = mesh.vertex_count();
+    q.ndotv.resize(n), q.contour_ndotv.resize(n), q.kr.resize(n), q.sc_strength.resize(n);
+    parallel_for_ranges(n, [&](size_t begin, size_t end) {
+        compute_view_quantities(mesh, fields, contour_normals, eye, feature_size, only, begin, end, q);
+    });
+}
+
+void compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
+                             const std::vector<glm::vec3>& contour_normals, glm::vec3 eye, float feature_size,
+                             const std::vector<uint8_t>& only, size_t begin, size_t end, ViewQuantities& q) {
+    const size_t n = mesh.vertex_count();
     const bool all = only.size() != n;
     const bool own_contour_normals = contour_normals.size() == n;
-    q.ndotv.resize(n), q.contour_ndotv.resize(n), q.kr.resize(n), q.sc_strength.resize(n);
     const float fs2 = feature_size * feature_size;
-    parallel_for(n, [&](size_t i) {
-        if (!all && !only[i]) return;
+    for (size_t i = begin; i < end; ++i) {
+        if (!all && !only[i]) continue;
         const glm::vec3 v = glm::normalize(eye - mesh.positions[i]);
         const glm::vec3& nrm = fields.normals[i];
         const float k1 = fields.k1[i], k2 = fields.k2[i];
@@ -43,7 +52,7 @@ void compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
         q.contour_ndotv[i] = own_contour_normals ? glm::dot(contour_normals[i], v) : ndotv;
         q.kr[i] = k1 * u * u + k2 * t * t;
         q.sc_strength[i] = (cwww - 2.0f * tau * tau * cot_theta) * fs2;
-    });
+    }
 }
 
 }  // namespace kappa

@@ -39,5 +39,11 @@ ViewQuantities compute_view_quantities(const Mesh& mesh, const SurfaceFields& fi
 void compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
                              const std::vector<glm::vec3>& contour_normals, glm::vec3 eye, float feature_size,
                              const std::vector<uint8_t>& only, ViewQuantities& out);
+// The same for the vertices [begin, end) alone, on the calling thread, into
+// arrays already of one entry per vertex: for a caller that runs several
+// per-vertex passes over one range while it is in cache.
+void compute_view_quantities(const Mesh& mesh, const SurfaceFields& fields,
+                             const std::vector<glm::vec3>& contour_normals, glm::vec3 eye, float feature_size,
+                             const std::vector<uint8_t>& only, size_t begin, size_t end, ViewQuantities& out);
 
 }  // namespace kappa

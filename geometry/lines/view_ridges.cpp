@@ -218,6 +218,14 @@ std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const Surface
 void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye, float fs,
                          const std::vector<uint8_t>& only, std::vector<ViewRidgeVertex>& view) {
     view.resize(mesh.vertex_count());
+    parallel_for_ranges(view.size(), [&](size_t begin, size_t end) {
+        view_ridge_vertices(mesh, f, eye, fs, only, begin, end, view);
+    });
+}
+
+void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye, float fs,
+                         const std::vector<uint8_t>& only, size_t begin, size_t end,
+                         std::vector<ViewRidgeVertex>& view) {
     const bool all = only.size() != view.size();
     auto needed = [&](size_t i) { return all || only[i] != 0; };
     // Vertex i from lane j of the view-dependent curvature.
@@ -239,36 +247,34 @@ void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye
         v.v_dmax = glm::dot(dir, v.dmax);
         v.ph_strength = (v.kmax * v.kmax - kmin * kmin) * lane(o.c) * fs * fs;
     };
-    parallel_for_ranges(view.size(), [&](size_t begin, size_t end) {
-        size_t i = begin;
-        for (; i + 4 <= end; i += 4) {  // four at once
-            if (!needed(i) && !needed(i + 1) && !needed(i + 2) && !needed(i + 3)) continue;
-            auto gather = [&](auto get) { return Lanes{get(i), get(i + 1), get(i + 2), get(i + 3)}; };
-            const auto o = view_curvature_of<Lanes>(
-                gather([&](size_t k) { return f.k1[k]; }), gather([&](size_t k) { return f.k2[k]; }),
-                gather([&](size_t k) { return f.dcurv[k].x; }), gather([&](size_t k) { return f.dcurv[k].y; }),
-                gather([&](size_t k) { return f.dcurv[k].z; }), gather([&](size_t k) { return f.dcurv[k].w; }),
-                gather([&](size_t k) { return f.normals[k].x; }), gather([&](size_t k) { return f.normals[k].y; }),
-                gather([&](size_t k) { return f.normals[k].z; }), gather([&](size_t k) { return f.d1[k].x; }),
-                gather([&](size_t k) { return f.d1[k].y; }), gather([&](size_t k) { return f.d1[k].z; }),
-                gather([&](size_t k) { return f.d2[k].x; }), gather([&](size_t k) { return f.d2[k].y; }),
-                gather([&](size_t k) { return f.d2[k].z; }), gather([&](size_t k) { return eye.x - mesh.positions[k].x; }),
-                gather([&](size_t k) { return eye.y - mesh.positions[k].y; }),
-                gather([&](size_t k) { return eye.z - mesh.positions[k].z; }));
-            for (int j = 0; j < 4; ++j)
-                if (needed(i + size_t(j))) store(i + size_t(j), o, j);
-        }
-        for (; i < end; ++i) {  // the rest one by one, with the same arithmetic
-            if (!needed(i)) continue;
-            const glm::vec3 t = eye - mesh.positions[i];
-            const glm::vec4 C = f.dcurv[i];
-            const glm::vec3 n = f.normals[i], d1 = f.d1[i], d2 = f.d2[i];
-            store(i,
-                  view_curvature_of<float>(f.k1[i], f.k2[i], C.x, C.y, C.z, C.w, n.x, n.y, n.z, d1.x, d1.y, d1.z, d2.x,
-                                           d2.y, d2.z, t.x, t.y, t.z),
-                  0);
-        }
-    });
+    size_t i = begin;
+    for (; i + 4 <= end; i += 4) {  // four at once
+        if (!needed(i) && !needed(i + 1) && !needed(i + 2) && !needed(i + 3)) continue;
+        auto gather = [&](auto get) { return Lanes{get(i), get(i + 1), get(i + 2), get(i + 3)}; };
+        const auto o = view_curvature_of<Lanes>(
+            gather([&](size_t k) { return f.k1[k]; }), gather([&](size_t k) { return f.k2[k]; }),
+            gather([&](size_t k) { return f.dcurv[k].x; }), gather([&](size_t k) { return f.dcurv[k].y; }),
+            gather([&](size_t k) { return f.dcurv[k].z; }), gather([&](size_t k) { return f.dcurv[k].w; }),
+            gather([&](size_t k) { return f.normals[k].x; }), gather([&](size_t k) { return f.normals[k].y; }),
+            gather([&](size_t k) { return f.normals[k].z; }), gather([&](size_t k) { return f.d1[k].x; }),
+            gather([&](size_t k) { return f.d1[k].y; }), gather([&](size_t k) { return f.d1[k].z; }),
+            gather([&](size_t k) { return f.d2[k].x; }), gather([&](size_t k) { return f.d2[k].y; }),
+            gather([&](size_t k) { return f.d2[k].z; }), gather([&](size_t k) { return eye.x - mesh.positions[k].x; }),
+            gather([&](size_t k) { return eye.y - mesh.positions[k].y; }),
+            gather([&](size_t k) { return eye.z - mesh.positions[k].z; }));
+        for (int j = 0; j < 4; ++j)
+            if (needed(i + size_t(j))) store(i + size_t(j), o, j);
+    }
+    for (; i < end; ++i) {  // the rest one by one, with the same arithmetic
+        if (!needed(i)) continue;
+        const glm::vec3 t = eye - mesh.positions[i];
+        const glm::vec4 C = f.dcurv[i];
+        const glm::vec3 n = f.normals[i], d1 = f.d1[i], d2 = f.d2[i];
+        store(i,
+              view_curvature_of<float>(f.k1[i], f.k2[i], C.x, C.y, C.z, C.w, n.x, n.y, n.z, d1.x, d1.y, d1.z, d2.x,
+                                       d2.y, d2.z, t.x, t.y, t.z),
+              0);
+    }
 }
 
 void view_ridges_of_face(const Mesh& mesh, const Face& t, const SurfaceFields& f,

@@ -61,6 +61,11 @@ std::vector<ViewRidgeVertex> view_ridge_vertices(const Mesh& mesh, const Surface
 // what it held (for a caller that keeps it from frame to frame).
 void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye, float feature_size,
                          const std::vector<uint8_t>& only, std::vector<ViewRidgeVertex>& out);
+// The same for the vertices [begin, end) alone, on the calling thread, into
+// `out` already of one entry per vertex (for several per-vertex passes over
+// one range while it is in cache).
+void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& fields, glm::vec3 eye, float feature_size,
+                         const std::vector<uint8_t>& only, size_t begin, size_t end, std::vector<ViewRidgeVertex>& out);
 void view_ridges_of_face(const Mesh& mesh, const Face& face, const SurfaceFields& fields,
                          const std::vector<ViewRidgeVertex>& vertices, const ViewRidgeOptions& options,
                          std::vector<LineSegment>& apparent_ridges, std::vector<LineSegment>& principal_highlights);
