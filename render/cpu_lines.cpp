@@ -74,13 +74,12 @@ struct MaskedRun {
     uint8_t families;
 };
 
-// The runs of faces in block number `block` (render/view_independent_lines.h)
-// that need extraction. Blocks are fixed, whatever the culling keeps, so
+// Faces [block * kBlockFaces, (block + 1) * kBlockFaces) and the runs in it
+// that need extraction (render/view_independent_lines.h keeps segments by the same blocks). Blocks are fixed, whatever the culling keeps, so
 // segments are chained and merged on screen (render/screen_merge.h) the
 // same way with culling as without: culled clusters hold no lines.
 constexpr uint32_t kBlockFaces = kLineBlockFaces;
 struct Block {
-    uint32_t block;
     std::vector<MaskedRun> runs;
 };
 
@@ -104,7 +103,7 @@ std::vector<Block> blocks_of(const std::vector<std::pair<uint8_t, std::vector<Fa
         const uint32_t next = i < events.size() ? events[i].first : at;
         for (uint32_t first = at; mask && first < next;) {
             const uint32_t block = first / kBlockFaces, end = std::min(next, (block + 1) * kBlockFaces);
-            if (block != out_block) out.push_back({block, {}}), out_block = block;
+            if (block != out_block) out.emplace_back(), out_block = block;
             out.back().runs.push_back({first, end - first, mask});
             first = end;
         }
@@ -208,8 +207,8 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
                                 return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels.topo_levels);
                             })});
     const std::vector<Block> blocks = blocks_of(families);
-    // Ridges, valleys, parabolic, H = 0 and topographic lines are kept
-    // between frames; the rest are extracted per frame.
+    // The segments of ridges, valleys, parabolic, H = 0 and topographic lines
+    // are kept between frames; the rest are extracted per frame.
     view_independent_.use(mesh, levels);
     constexpr uint8_t kept_families = kCurvatureLines | kTopo;
     LineExtractionOptions per_view = levels;
@@ -264,9 +263,8 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
         thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
         thread_local std::vector<LineSegment> merged;
         for (auto& segments : found) segments.clear();
-        bool use_kept = false;
         for (const MaskedRun& r : blocks[i].runs) {
-            use_kept = use_kept || (r.families & kept_families);
+            if (r.families & kept_families) view_independent_.append_faces(r.first, r.count, m, fields, found);
             const uint8_t wanted = r.families & ~kept_families;
             if (!wanted) continue;
             for (uint32_t f = r.first; f < r.first + r.count; ++f) {
@@ -280,16 +278,10 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
                 if (families & kIsophotes) level_lines_of_face(m, face, level, per_view, found);
             }
         }
-        const ViewIndependentLines::BlockLines* kept =
-            use_kept ? &view_independent_.block(blocks[i].block, m, fields) : nullptr;
-        for (int type = 0; type < kLineTypeCount; ++type) {
-            const LineType t = LineType(type);
-            if (is_view_independent(t)) {
-                if (kept) append_polylines(t, (*kept)[size_t(type)], merge, window, merged, block_segments[i]);
-            } else if (!found[size_t(type)].empty()) {
-                append_polylines(t, chain_segments(found[size_t(type)]), merge, window, merged, block_segments[i]);
-            }
-        }
+        for (int type = 0; type < kLineTypeCount; ++type)
+            if (!found[size_t(type)].empty())
+                append_polylines(LineType(type), chain_segments(found[size_t(type)]), merge, window, merged,
+                                 block_segments[i]);
     });
     CpuLines lines;
     lines.blocks = std::move(block_segments);

@@ -7,11 +7,6 @@
 
 namespace kappa::render {
 
-bool is_view_independent(LineType t) {
-    return t == LineType::Ridge || t == LineType::Valley || t == LineType::Parabolic || t == LineType::MeanZero ||
-           t == LineType::Topo;
-}
-
 namespace {
 
 // Only the options these types read, with every other type off.
@@ -51,23 +46,35 @@ void ViewIndependentLines::use(const MeshBuffers& mesh, const LineExtractionOpti
     blocks_.resize((m.face_count() + kLineBlockFaces - 1) / kLineBlockFaces);
 }
 
-const ViewIndependentLines::BlockLines& ViewIndependentLines::block(uint32_t b, const Mesh& m,
-                                                                    const SurfaceFields& fields) {
-    std::unique_ptr<BlockLines>& kept = blocks_[b];
+const ViewIndependentLines::Block& ViewIndependentLines::block(uint32_t b, const Mesh& m, const SurfaceFields& fields) {
+    std::unique_ptr<Block>& kept = blocks_[b];
     if (kept) return *kept;
+    kept = std::make_unique<Block>();
     thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
-    for (auto& segments : found) segments.clear();
     const LevelValues levels{{}, heights_};
-    const uint32_t end = uint32_t(std::min<size_t>(m.face_count(), size_t(b + 1) * kLineBlockFaces));
-    for (uint32_t f = b * kLineBlockFaces; f < end; ++f) {
+    const uint32_t first = b * kLineBlockFaces;
+    const uint32_t end = uint32_t(std::min<size_t>(m.face_count(), size_t(first) + kLineBlockFaces));
+    kept->face_start.assign(kLineBlockFaces + 1, 0);
+    for (uint32_t f = first; f < end; ++f) {
+        for (auto& segments : found) segments.clear();
         if (options_.ridges || options_.valleys || options_.parabolic || options_.mean_zero)
             curvature_lines_of_face(m, m.faces[f], fields, options_, found);
         if (options_.topo) level_lines_of_face(m, m.faces[f], levels, options_, found);
+        for (int type = 0; type < kLineTypeCount; ++type)
+            for (const LineSegment& s : found[size_t(type)]) kept->segments.push_back(s), kept->types.push_back(uint8_t(type));
+        kept->face_start[f - first + 1] = uint32_t(kept->segments.size());
     }
-    kept = std::make_unique<BlockLines>();
-    for (int type = 0; type < kLineTypeCount; ++type)
-        if (!found[size_t(type)].empty()) (*kept)[size_t(type)] = chain_segments(found[size_t(type)]);
+    for (uint32_t f = end - first; f < kLineBlockFaces; ++f) kept->face_start[f + 1] = kept->face_start[f];
     return *kept;
+}
+
+void ViewIndependentLines::append_faces(uint32_t first, uint32_t count, const Mesh& mesh, const SurfaceFields& fields,
+                                        ExtractedLines& lines) {
+    const uint32_t b = first / kLineBlockFaces;
+    const Block& kept = block(b, mesh, fields);
+    const uint32_t local = first - b * kLineBlockFaces;
+    for (uint32_t s = kept.face_start[local]; s < kept.face_start[local + count]; ++s)
+        lines[kept.types[s]].push_back(kept.segments[s]);
 }
 
 }  // namespace kappa::render
