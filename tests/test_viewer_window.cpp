@@ -29,10 +29,16 @@ std::string xvfb(const std::string& args) {
     return "xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(KAPPA_EXE) + " view " + args;
 }
 
-// xvfb-run -a may race with another Xvfb starting at the same moment: retry once.
+// xvfb-run -a may race with another Xvfb starting at the same moment (it
+// says "Xvfb failed", or the server it found goes away and kappa finds no
+// display): retry, at most twice.
 test::CommandResult run_viewer(const std::string& args) {
     auto r = test::run_command(xvfb(args));
-    if (r.exit_code != 0 && r.output.find("Xvfb failed") != std::string::npos) r = test::run_command(xvfb(args));
+    for (int retry = 0; retry < 2 && r.exit_code != 0 &&
+                        (r.output.find("Xvfb failed") != std::string::npos ||
+                         r.output.find("kappa view: no display") != std::string::npos);
+         ++retry)
+        r = test::run_command(xvfb(args));
     return r;
 }
 
