@@ -193,3 +193,47 @@ TEST_CASE("view_ridge_vertices: four at a time gives the bits of one at a time",
                          : some[i].view_curv != 0 || some[i].dq1 != 0 || some[i].kmax != 0;
     CHECK(wrong == 0);
 }
+
+// compute_view_quantities too: four vertices at once or one at a time, any
+// thread count, the bits of the formulas written out with glm.
+TEST_CASE("compute_view_quantities: four at a time gives the bits of one at a time", "[lines]") {
+    const Mesh mesh = make_torus(1.0f, 0.35f, 37, 27);  // 999 vertices: ranges of any length
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    std::vector<glm::vec3> contour_normals = fields.normals;
+    for (glm::vec3& n : contour_normals) n = glm::normalize(n + glm::vec3(0.05f, -0.02f, 0.03f));
+    const glm::vec3 eye(2.5f, 1.5f, 3.0f);
+    const float fs = 0.3f;
+    std::vector<ViewQuantities> runs;
+    for (unsigned threads : {1u, 2u, 3u, 7u}) {
+        set_thread_count(threads);
+        runs.push_back(compute_view_quantities(mesh, fields, contour_normals, eye, fs));
+    }
+    set_thread_count(0);
+    size_t differ = 0, suggestive = 0;
+    for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+        const glm::vec3 v = glm::normalize(eye - mesh.positions[i]);
+        const float ndotv = glm::dot(fields.normals[i], v);
+        const float u = glm::dot(v, fields.d1[i]), t = glm::dot(v, fields.d2[i]);
+        const float inv_sin = 1.0f / std::sqrt(std::max(u * u + t * t, 1e-12f));
+        const float wu = u * inv_sin, wt = t * inv_sin;
+        const glm::vec4 C = fields.dcurv[i];
+        const float cwww = wu * wu * (C.x * wu + 3.0f * C.y * wt) + wt * wt * (3.0f * C.z * wu + C.w * wt);
+        const float tau = (fields.k2[i] - fields.k1[i]) * wu * wt;
+        const float kr = fields.k1[i] * u * u + fields.k2[i] * t * t;
+        const float sc = (cwww - 2.0f * tau * tau * (ndotv * inv_sin)) * (fs * fs);
+        for (const ViewQuantities& q : runs)
+            differ += q.ndotv[i] != ndotv || q.contour_ndotv[i] != glm::dot(contour_normals[i], v) || q.kr[i] != kr ||
+                      q.sc_strength[i] != sc;
+        suggestive += sc > 0.05f;
+    }
+    CHECK(differ == 0);
+    CHECK(suggestive > 50);  // not all zero
+    std::vector<uint8_t> only(mesh.vertex_count(), 0);
+    for (size_t i = 0; i < only.size(); i += 5) only[i] = 1;
+    const ViewQuantities some = compute_view_quantities(mesh, fields, contour_normals, eye, fs, only);
+    size_t wrong = 0;
+    for (size_t i = 0; i < only.size(); ++i)
+        wrong += only[i] ? some.kr[i] != runs[0].kr[i] || some.sc_strength[i] != runs[0].sc_strength[i]
+                         : some.kr[i] != 0 || some.ndotv[i] != 0;
+    CHECK(wrong == 0);
+}

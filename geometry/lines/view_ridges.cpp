@@ -1,5 +1,6 @@
 #include "view_ridges.h"
 
+#include "geometry/lines/lanes.h"
 #include "geometry/lines/zero_crossings.h"
 #include "geometry/parallel.h"
 
@@ -17,21 +18,11 @@ using namespace lines;
 namespace {
 
 // The view-dependent curvature written once for a scalar F = float and for
-// F = Lanes, four vertices at once (GCC vector extensions: SSE on x86-64,
-// lane-wise code elsewhere). Both run the same IEEE operations in the same
-// order, so a vertex gets the same bits whichever way it is computed.
-using Lanes = float __attribute__((vector_size(16)));
-
-inline float root(float x) { return std::sqrt(x); }
-inline Lanes root(Lanes x) {
-#ifdef __SSE__
-    return __builtin_ia32_sqrtps(x);
-#else
-    return Lanes{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
-#endif
-}
-template <typename F> F larger(F a, F b) { return a < b ? b : a; }  // std::max's order
-template <typename F> F magnitude(F x) { return x < 0.0f ? -x : x; }
+// F = Lanes, four vertices at once (geometry/lines/lanes.h).
+using lanes::Lanes;
+using lanes::larger;
+using lanes::magnitude;
+using lanes::root;
 
 template <typename F>
 struct ViewCurvatureOf {
