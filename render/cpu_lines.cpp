@@ -258,11 +258,22 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     window.mvp = frame.mvp, window.viewport = frame.viewport;
     window.scale_tolerance = s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y);
     window.silhouette_only = l.silhouette && !l.contours;
-    std::vector<std::vector<WindowSegment>> block_segments(blocks.size());
-    parallel_for_dynamic(blocks.size(), [&](size_t i) {
+    // Boundary edges (not culled, as the GL pass drew them all) after the blocks of faces.
+    const bool boundaries = l.boundaries && !mesh.cpu_boundary_edges().empty();
+    std::vector<std::vector<WindowSegment>> block_segments(blocks.size() + size_t(boundaries));
+    parallel_for_dynamic(block_segments.size(), [&](size_t i) {
         thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
         thread_local std::vector<LineSegment> merged;
         for (auto& segments : found) segments.clear();
+        if (i == blocks.size()) {
+            auto& edges = found[int(LineType::Boundary)];
+            for (const glm::uvec2& e : mesh.cpu_boundary_edges()) {
+                const glm::vec3 a = m.positions[e.x], b = m.positions[e.y];
+                edges.push_back({a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)});
+            }
+            append_polylines(LineType::Boundary, chain_segments(edges), merge, window, merged, block_segments[i]);
+            return;
+        }
         for (const MaskedRun& r : blocks[i].runs) {
             if (r.families & kept_families) view_independent_.append_faces(r.first, r.count, m, fields, found);
             const uint8_t wanted = r.families & ~kept_families;

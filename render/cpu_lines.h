@@ -3,15 +3,17 @@
 // valleys, parabolic and H = 0 lines, apparent ridges and principal
 // highlights, isophotes and topographic lines, per frame, from the
 // triangles of the clusters that can hold each kind
-// (render/cluster_culling.h), on all worker threads, as segments in window
+// (render/cluster_culling.h), and the open boundary edges, on all worker
+// threads, as segments in window
 // coordinates. On software GL (llvmpipe) the segments are also drawn on the
 // CPU (render/line_raster.h) against the surface's depth read back;
 // otherwise each goes through the GL as a quad of two triangles
 // (shaders/segment_quads_vert.glsl, no geometry shader). Both draw and
 // occlusion-test them as the geometry-shader passes draw theirs
 // (tests/test_render_cpu_lines.cpp); on software GL this is much faster
-// than a geometry shader on every triangle. Creases, boundaries and glyphs
-// keep their own (cheap) passes.
+// than a geometry shader on every triangle. Creases and glyphs keep their
+// own (cheap) passes. The view-independent kinds' segments are kept between
+// frames (render/view_independent_lines.h).
 #pragma once
 
 #include "render/frame_params.h"

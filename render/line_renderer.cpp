@@ -177,7 +177,7 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         creases_.set("u_silhouette_only", int(silhouette_only));
         mesh.draw_creases();
     }
-    if (s.lines.boundaries && mesh.boundary_edge_count() > 0) {
+    if (s.lines.boundaries && mesh.boundary_edge_count() > 0 && !cpu_lines) {
         ink.anywhere = true;
         set_common(boundaries_, mesh, frame, s);
         mesh.draw_boundary_edges();

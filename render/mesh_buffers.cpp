@@ -90,6 +90,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glGenBuffers(1, &edge_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(glm::uvec2)), edges.data(), GL_STATIC_DRAW);
+    cpu_boundary_edges_ = std::move(edges);
 
     glBindVertexArray(0);
     upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));

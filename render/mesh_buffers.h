@@ -42,6 +42,8 @@ public:
     const Mesh& cpu_mesh() const { return cpu_mesh_; }
     const SurfaceFields& cpu_fields() const { return cpu_fields_; }
     const std::vector<glm::vec3>& cpu_fine_normals() const { return cpu_fine_normals_; }
+    // The open boundary edges (vertex pairs in the uploaded order), as draw_boundary_edges draws them.
+    const std::vector<glm::uvec2>& cpu_boundary_edges() const { return cpu_boundary_edges_; }
     // A number that changes at every upload of fields, different for every
     // MeshBuffers: for what is computed from the fields and kept.
     uint64_t fields_version() const { return fields_version_; }
@@ -95,6 +97,7 @@ private:
     Mesh cpu_mesh_;
     SurfaceFields cpu_fields_;
     std::vector<glm::vec3> cpu_fine_normals_;
+    std::vector<glm::uvec2> cpu_boundary_edges_;
     uint64_t fields_version_ = 0;
 };
 

@@ -14,6 +14,7 @@
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/primitives.h"
 #include "geometry/surface_analysis.h"
 #include "render/ink_agreement.h"
 
@@ -51,8 +52,9 @@ TEST_CASE("CPU and geometry-shader extraction of lines draw the same image", "[r
         view_ridges.apparent_ridges = view_ridges.principal_highlights = true;
         render::LineSelection levels{false, false, false, false};
         levels.isophotes = levels.topo = true;
+        const render::LineSelection boundaries{true, false, true, false};  // bunny's holes (contours: ink on both)
         for (const render::LineSelection& lines :
-             {contours_suggestive, silhouette, highlights, curvature, view_ridges, levels}) {
+             {contours_suggestive, silhouette, highlights, curvature, view_ridges, levels, boundaries}) {
             INFO((name.empty() ? "built-in" : name) << ", lines " << render::to_string(lines));
             render::RenderSettings s = test::lines_only(lines);
             s.line_extraction = render::LineExtraction::Gpu;
@@ -114,4 +116,31 @@ TEST_CASE("kept view-independent lines draw what a first frame draws", "[render]
     const render::Image updated = render::render_to_image(renderer, front, s, 320, 240);
     CHECK(updated.pixels != first.pixels);
     CHECK(updated.pixels == first_frame(doubled, s).pixels);
+}
+
+// Open boundaries: drawn by the CPU line pass on software GL (with the other
+// kinds, no GL pass of their own), as the GL pass draws them: a grid's square
+// outline seen at a slant, and bunny.ply's holes seen from below (partly
+// hidden by the rest of the base).
+TEST_CASE("the CPU line pass draws open boundaries as the GL pass does", "[render][cpu-lines]") {
+    const Mesh grid = make_grid(1.0f, 40), bunny = load_mesh(test::shared_mesh("bunny.ply"));
+    for (const Mesh* mesh : {&grid, &bunny}) {
+        const SurfaceFields fields = compute_surface_fields(*mesh);
+        const float fs = feature_size(*mesh, fields);
+        const auto b = render::bounding_sphere(*mesh);
+        const glm::vec3 from = mesh == &grid ? glm::vec3(0.4f, -1.0f, 2.0f) : glm::vec3(0.3f, -2.5f, 1.0f);
+        const auto camera = render::Camera::look_at(b.center + from * b.radius, b.center, {0, 0, 1}, 35.0f);
+        render::RenderSettings s = test::lines_only(render::LineSelection{false, false, true, false});
+        s.line_extraction = render::LineExtraction::Gpu;
+        const render::Image gpu = test::render(*mesh, fields, fs, camera, s, 400, 300);
+        s.line_extraction = render::LineExtraction::Cpu;
+        const render::Image cpu = test::render(*mesh, fields, fs, camera, s, 400, 300);
+        test::maybe_save(cpu, mesh == &grid ? "boundaries_grid" : "boundaries_bunny");
+        const size_t ink = test::count_ink(gpu);
+        INFO((mesh == &grid ? "grid" : "bunny") << ": " << ink << " ink pixels, CPU " << test::count_ink(cpu));
+        CHECK(ink > (mesh == &grid ? 1000u : 100u));
+        CHECK(double(differing_pixels(gpu, cpu)) < 0.02 * double(ink));
+        CHECK(render::ink_within(gpu, cpu, 1.0f) > 0.995);
+        CHECK(render::ink_within(cpu, gpu, 1.0f) > 0.995);
+    }
 }
