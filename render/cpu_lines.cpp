@@ -168,6 +168,7 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     o.isophotes = l.isophotes && s.isophote_count > 0, o.topo = l.topo && s.topo_count > 0;
     o.sc_threshold = s.sc_threshold, o.sh_threshold = s.sh_threshold, o.rv_threshold = s.rv_threshold;
     o.feature_size = fs, o.fade = s.fade;
+    o.cull_back_faces = !s.hidden_lines;  // as rtsc: no line but contours on triangles turned away
 
     const bool view_lines = o.contours || o.suggestive || o.suggestive_highlights || o.dwkr;
     const bool highlights = l.suggestive_highlights;
@@ -235,7 +236,7 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     LevelValues& level = scratch_.levels;
     begin_level_values(n, per_view, level);
     LinePrefilter& prefilter = scratch_.prefilter;
-    begin_line_prefilter(n, vr, per_view, prefilter);
+    begin_line_prefilter(n, vr, per_view, frame.eye, prefilter);
     parallel_for_ranges(n, [&](size_t begin, size_t end) {
         constexpr size_t kInCache = 1024;  // vertices: about 200 bytes each are read and written
         for (size_t first = begin; first < end; first += kInCache) {
@@ -275,7 +276,8 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
             return;
         }
         for (const MaskedRun& r : blocks[i].runs) {
-            if (r.families & kept_families) view_independent_.append_faces(r.first, r.count, m, fields, found);
+            if (r.families & kept_families)
+                view_independent_.append_faces(r.first, r.count, m, fields, o.cull_back_faces, frame.eye, found);
             const uint8_t wanted = r.families & ~kept_families;
             if (!wanted) continue;
             for (uint32_t f = r.first; f < r.first + r.count; ++f) {

@@ -3,6 +3,7 @@
 #include "geometry/parallel.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -29,8 +30,9 @@ enum Bit : uint64_t {
     kDmaxUnsure = 1u << 14,      // a component of dmax near zero, or v.dmax zero (or NaN)
     kVDmaxPositive = 1u << 15,   // v.dmax > 0, dmax turned (see turned_dmax_signs)
 };
+constexpr uint64_t kFacing = uint64_t(1) << 38;  // n.(eye - p) > 0 (faces_eye)
 constexpr int kIsophoteShift = 16, kTopoShift = 24;
-constexpr int kTmSignShift = 32, kDmaxSignShift = 35;  // three bits each: x > 0, y > 0, z > 0
+constexpr int kTmSignShift = 32, kDmaxSignShift = 35;  // three bits each: x > 0, y > 0, z > 0 (then kFacing)
 
 // The signs of v's components as three bits, and whether one is so near zero
 // (or NaN) that a product of two could round to zero: two vectors with the
@@ -77,27 +79,28 @@ bool bands_differ(uint64_t a, uint64_t b, uint64_t c, int shift) {
 
 LinePrefilter make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
                                   const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
-                                  const LevelValues& levels, const LineExtractionOptions& o,
+                                  const LevelValues& levels, const LineExtractionOptions& o, glm::vec3 eye,
                                   const std::vector<uint8_t>& only) {
     LinePrefilter p;
     p.bits.assign(mesh.vertex_count(), 0);
-    make_line_prefilter(mesh, fields, view, ridges, ridge_options, levels, o, only, p);
+    make_line_prefilter(mesh, fields, view, ridges, ridge_options, levels, o, eye, only, p);
     return p;
 }
 
 void make_line_prefilter(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& view,
                          const std::vector<ViewRidgeVertex>& ridges, const ViewRidgeOptions& ridge_options,
-                         const LevelValues& levels, const LineExtractionOptions& o, const std::vector<uint8_t>& only,
-                         LinePrefilter& p) {
-    begin_line_prefilter(mesh.vertex_count(), ridge_options, o, p);
+                         const LevelValues& levels, const LineExtractionOptions& o, glm::vec3 eye,
+                         const std::vector<uint8_t>& only, LinePrefilter& p) {
+    begin_line_prefilter(mesh.vertex_count(), ridge_options, o, eye, p);
     parallel_for_ranges(mesh.vertex_count(), [&](size_t begin, size_t end) {
         line_prefilter_bits(mesh, fields, view, ridges, levels, only, begin, end, p);
     });
 }
 
 void begin_line_prefilter(size_t vertex_count, const ViewRidgeOptions& ridge_options,
-                          const LineExtractionOptions& options, LinePrefilter& p) {
+                          const LineExtractionOptions& options, glm::vec3 eye, LinePrefilter& p) {
     p.options = options;
+    p.eye = eye;
     p.ridge_options = ridge_options;
     p.bits.resize(vertex_count);
 }
@@ -114,6 +117,7 @@ void line_prefilter_bits(const Mesh& mesh, const SurfaceFields& fields, const Vi
     for (size_t v = begin; v < end; ++v) {
         if (!all && !only[v]) continue;
         uint64_t b = fields.unreliable(v) ? uint64_t(kUnreliable) : 0u;
+        if (o.cull_back_faces && glm::dot(fields.normals[v], p.eye - mesh.positions[v]) > 0) b |= kFacing;
         if (has_view) {
             if (view.contour_ndotv[v] > 0) b |= kContourFront;
             if (view.kr[v] > 0) b |= kKrPositive;
@@ -165,6 +169,8 @@ uint8_t LinePrefilter::families_on(const Face& t, uint8_t wanted) const {
              (o.suggestive_highlights && (differ & kKrPositive) && (any & kHighlight)) || (o.dwkr && (differ & kSuggestive)));
         if ((o.contours && (differ & kContourFront)) || suggestive_kinds) families |= kViewLines;
     }
+    // Contours only on a triangle turned away at all three corners (cull_back_faces).
+    if (o.cull_back_faces && !(any & kFacing)) wanted &= kViewLines;
     if ((wanted & kCurvatureLines) && reliable &&
         ((o.parabolic && (differ & kGaussPositive)) || (o.mean_zero && (differ & kMeanPositive)) ||
          ((o.ridges || o.valleys) && (any & kRidgeStrong))))

@@ -139,6 +139,7 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
     options.apparent_ridges = lines.apparent_ridges, options.principal_highlights = lines.principal_highlights;
     options.ar_threshold = settings.ar_threshold, options.ph_threshold = settings.ph_threshold;
     options.hidden_creases = settings.hidden_lines;
+    options.cull_back_faces = !settings.hidden_lines;  // as the line passes
     options.sc_threshold = settings.sc_threshold;
     options.sh_threshold = settings.sh_threshold;
     options.rv_threshold = settings.rv_threshold;

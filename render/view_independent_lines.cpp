@@ -69,12 +69,15 @@ const ViewIndependentLines::Block& ViewIndependentLines::block(uint32_t b, const
 }
 
 void ViewIndependentLines::append_faces(uint32_t first, uint32_t count, const Mesh& mesh, const SurfaceFields& fields,
-                                        ExtractedLines& lines) {
+                                        bool cull_back_faces, glm::vec3 eye, ExtractedLines& lines) {
     const uint32_t b = first / kLineBlockFaces;
     const Block& kept = block(b, mesh, fields);
     const uint32_t local = first - b * kLineBlockFaces;
-    for (uint32_t s = kept.face_start[local]; s < kept.face_start[local + count]; ++s)
-        lines[kept.types[s]].push_back(kept.segments[s]);
+    for (uint32_t f = local; f < local + count; ++f) {
+        const uint32_t begin = kept.face_start[f], end = kept.face_start[f + 1];
+        if (begin == end || (cull_back_faces && !faces_eye(mesh, fields, mesh.faces[first - local + f], eye))) continue;
+        for (uint32_t s = begin; s < end; ++s) lines[kept.types[s]].push_back(kept.segments[s]);
+    }
 }
 
 }  // namespace kappa::render

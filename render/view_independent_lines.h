@@ -34,10 +34,11 @@ public:
     // Whether any view-independent type is on.
     bool any() const { return any_; }
     // Appends the segments of faces [first, first + count), all in one block,
-    // to `lines` (by type, in face order), extracting the block's on first use.
-    // Safe to call from several threads at once for different blocks.
+    // to `lines` (by type, in face order), extracting the block's on first use;
+    // with cull_back_faces, not those of faces turned away from `eye`
+    // (faces_eye). Safe to call from several threads at once for different blocks.
     void append_faces(uint32_t first, uint32_t count, const Mesh& mesh, const SurfaceFields& fields,
-                      ExtractedLines& lines);
+                      bool cull_back_faces, glm::vec3 eye, ExtractedLines& lines);
 
 private:
     struct Block {

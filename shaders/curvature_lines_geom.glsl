@@ -9,6 +9,8 @@
 //   direction has no sign: the triangle's directions (and with them e, odd
 //   in the direction) are turned to agree with its first vertex's.
 // Hidden parts are removed by the same depth test as every line.
+// As rtsc, a triangle turned away from the eye at all three corners (n.v <= 0
+// with the fields' normals) draws nothing unless hidden lines are drawn.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 12) out;  // three kinds of segment
 
@@ -17,12 +19,14 @@ in CurvatureVertex {
     float gaussian, mean, kmax, emax;
     vec3 dmax;
     float unreliable;
+    float facing;
 } v_in[];
 
 uniform int u_parabolic, u_mean_zero, u_ridges, u_valleys;
 uniform float u_rv_threshold;  // dimensionless S
 uniform float u_feature_size;  // fs
 uniform int u_fade;            // fade ridges and valleys whose |kmax| is close to the threshold
+uniform int u_hidden_lines;
 
 vec4 clip_point(int i, int j, float s) { return mix(gl_in[i].gl_Position, gl_in[j].gl_Position, s); }
 
@@ -92,6 +96,7 @@ void ridges_and_valleys() {
 
 void main() {
     if (v_in[0].unreliable + v_in[1].unreliable + v_in[2].unreliable > 0.0) return;
+    if (u_hidden_lines == 0 && v_in[0].facing <= 0.0 && v_in[1].facing <= 0.0 && v_in[2].facing <= 0.0) return;
     if (u_parabolic != 0) draw_zero_set(float[3](v_in[0].gaussian, v_in[1].gaussian, v_in[2].gaussian));
     if (u_mean_zero != 0) draw_zero_set(float[3](v_in[0].mean, v_in[1].mean, v_in[2].mean));
     if (u_ridges != 0 || u_valleys != 0) ridges_and_valleys();

@@ -1,6 +1,7 @@
 // View-independent curvature lines, vertex stage: the fields whose zero sets
 // are the lines (curvature_lines_geom.glsl).
 uniform mat4 u_mvp;
+uniform vec3 u_eye;  // model coordinates
 
 out CurvatureVertex {
     vec3 position;
@@ -10,6 +11,7 @@ out CurvatureVertex {
     float emax;      // its derivative along its own direction (C111 or C222)
     vec3 dmax;       // that direction (its sign is arbitrary per vertex)
     float unreliable;
+    float facing;    // n.(eye - position): > 0 where turned towards the eye
 } v_out;
 
 void main() {
@@ -21,5 +23,6 @@ void main() {
     v_out.emax = first ? a_dcurv.x : a_dcurv.w;  // C(d1,d1,d1) = a, C(d2,d2,d2) = d
     v_out.dmax = first ? a_d1 : a_d2;
     v_out.unreliable = a_unreliable;
+    v_out.facing = dot(a_normal, u_eye - a_position);
     gl_Position = u_mvp * vec4(a_position, 1.0);
 }

@@ -2,18 +2,23 @@
 // interpolated value crosses each of the levels first + k step, k = 0 ..
 // count - 1 (at most 16): isophotes (n.l levels) or topographic lines
 // (height levels along y). Hidden parts are removed like every line's.
+// As rtsc, a triangle turned away from the eye at all three corners (n.v <= 0
+// with the fields' normals) draws nothing unless hidden lines are drawn.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 64) out;
 
 in LevelVertex {
     vec3 position;
     float value;
+    float facing;
 } v_in[];
 
 uniform float u_first, u_step;
 uniform int u_count;
+uniform int u_hidden_lines;
 
 void main() {
+    if (u_hidden_lines == 0 && v_in[0].facing <= 0.0 && v_in[1].facing <= 0.0 && v_in[2].facing <= 0.0) return;
     float lo = min(min(v_in[0].value, v_in[1].value), v_in[2].value);
     float hi = max(max(v_in[0].value, v_in[1].value), v_in[2].value);
     float tolerance = 0.5 * max(max(distance(v_in[0].position, v_in[1].position),

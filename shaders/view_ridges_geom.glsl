@@ -29,11 +29,13 @@ in ViewRidgeVertex {
     float v_dmax;
     float ph_strength;
     float unreliable;
+    float facing;
 } v_in[];
 
 uniform int u_apparent_ridges, u_principal_highlights, u_fade;
 uniform float u_ar_threshold;  // dimensionless, on sqrt(q1) fs
 uniform float u_ph_threshold;  // dimensionless, on (kmax^2 - kmin^2) n.v fs^2
+uniform int u_hidden_lines;
 
 float tolerance() {
     return 0.5 * max(max(distance(v_in[0].position, v_in[1].position), distance(v_in[1].position, v_in[2].position)),
@@ -138,6 +140,8 @@ void principal_highlights() {
 
 void main() {
     if (v_in[0].unreliable + v_in[1].unreliable + v_in[2].unreliable > 0.0) return;
+    // As rtsc, nothing on a triangle turned away at all three corners unless hidden lines are drawn.
+    if (u_hidden_lines == 0 && v_in[0].facing <= 0.0 && v_in[1].facing <= 0.0 && v_in[2].facing <= 0.0) return;
     if (u_apparent_ridges != 0) apparent_ridges();
     if (u_principal_highlights != 0) principal_highlights();
 }

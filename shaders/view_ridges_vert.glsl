@@ -16,6 +16,7 @@ out ViewRidgeVertex {
     float v_dmax;      // v.dmax: zero where w lies along the other principal direction
     float ph_strength; // (kmax^2 - kmin^2) n.v fs^2, >= 0 where front-facing
     float unreliable;
+    float facing;      // n.(eye - position): > 0 where turned towards the eye
 } v_out;
 
 void main() {
@@ -39,5 +40,6 @@ void main() {
     float kmin = first ? a_curv.y : a_curv.x;
     v_out.ph_strength = (v_out.kmax * v_out.kmax - kmin * kmin) * dot(a_normal, v) * u_feature_size * u_feature_size;
     v_out.unreliable = a_unreliable;
+    v_out.facing = dot(a_normal, to_eye);
     gl_Position = u_mvp * vec4(a_position, 1.0);
 }

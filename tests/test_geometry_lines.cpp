@@ -237,3 +237,42 @@ TEST_CASE("compute_view_quantities: four at a time gives the bits of one at a ti
                          : some.kr[i] != 0 || some.ndotv[i] != 0;
     CHECK(wrong == 0);
 }
+
+// LineExtractionOptions::cull_back_faces (rtsc's back-face culling): the
+// triangles turned away from the eye at all three corners keep their
+// contours and nothing else; the other triangles keep all their lines.
+TEST_CASE("culling back faces drops exactly the lines of triangles turned away", "[lines]") {
+    const Mesh sphere = make_icosphere(1.0f, 4);
+    const SurfaceFields fields = compute_surface_fields(sphere);
+    const glm::vec3 eye(0.3f, 0.4f, 4.0f);
+    LineExtractionOptions o;
+    o.suggestive = o.creases = false;
+    o.isophotes = o.topo = o.mean_zero = true;  // H = -1 everywhere: no mean-zero line; the levels cover the sphere
+    o.light = glm::normalize(glm::vec3(1, 0.2f, -0.5f));
+    o.isophote_levels = isophote_level_set(6);
+    o.topo_levels = {-0.9f, 0.1f, 19};
+    const ExtractedLines all = lines_of(sphere, fields, eye, o);
+    o.cull_back_faces = true;
+    const ExtractedLines culled = lines_of(sphere, fields, eye, o);
+    CHECK(culled[int(LineType::Contour)].size() == all[int(LineType::Contour)].size());
+    // A segment's triangle turned towards the eye has a corner with n.(eye - p) = p.eye - 1 > 0 (the
+    // unit sphere: n = p); across the triangle p.eye changes by at most |eye| times its longest edge.
+    float longest = 0;
+    for (const Face& t : sphere.faces)
+        for (int k = 0; k < 3; ++k)
+            longest = std::max(longest, glm::distance(sphere.positions[t[k]], sphere.positions[t[(k + 1) % 3]]));
+    const float reach = glm::length(eye) * longest;
+    for (const LineType type : {LineType::Isophote, LineType::Topo}) {
+        const auto& kept = culled[int(type)];
+        const auto& every = all[int(type)];
+        size_t front = 0;
+        for (const LineSegment& s : every) front += glm::dot(s.a, eye - s.a) > 0.05f && glm::dot(s.b, eye - s.b) > 0.05f;
+        INFO(line_type_name(type) << ": " << every.size() << " segments, " << kept.size() << " kept, " << front
+                                  << " clearly in front");
+        CHECK(kept.size() >= front);
+        CHECK(kept.size() < every.size() * 3 / 4);  // about half the sphere is turned away
+        size_t beyond = 0;
+        for (const LineSegment& s : kept) beyond += std::max(glm::dot(s.a, eye - s.a), glm::dot(s.b, eye - s.b)) < -reach;
+        CHECK(beyond == 0);
+    }
+}

@@ -33,7 +33,7 @@ TEST_CASE("the line prefilter keeps every triangle that holds a line and skips m
         const ViewQuantities q = compute_view_quantities(mesh, fields, {}, eye, fs);
         const std::vector<ViewRidgeVertex> ridges = view_ridge_vertices(mesh, fields, eye, fs);
         const LevelValues levels = level_values(mesh, fields, o);
-        const render::LinePrefilter prefilter = render::make_line_prefilter(mesh, fields, q, ridges, vr, levels, o);
+        const render::LinePrefilter prefilter = render::make_line_prefilter(mesh, fields, q, ridges, vr, levels, o, eye);
         LineExtractionOptions iso = o, topo = o;
         iso.topo = false, topo.isophotes = false;
         size_t missed = 0, with_lines = 0, kept_of[5] = {}, has_of[5] = {};
@@ -78,5 +78,19 @@ TEST_CASE("the line prefilter keeps every triangle that holds a line and skips m
         }
         INFO("view ridges: " << has_of[2] << " triangles with lines, " << kept_of[2] << " kept");
         CHECK(kept_of[2] < 3 * has_of[2] + 100);
+
+        // Culling back faces (rtsc): triangles turned away keep the contour family alone, the others all.
+        LineExtractionOptions cull = o;
+        cull.cull_back_faces = true;
+        const render::LinePrefilter culled = render::make_line_prefilter(mesh, fields, q, ridges, vr, levels, cull, eye);
+        size_t turned_away = 0, wrong = 0;
+        for (const Face& t : mesh.faces) {
+            const uint8_t all = prefilter.families_on(t, 0x1f) & 0x1f, some = culled.families_on(t, 0x1f) & 0x1f;
+            const bool facing = faces_eye(mesh, fields, t, eye);
+            turned_away += !facing;
+            wrong += facing ? some != all : some != (all & render::kViewLines);
+        }
+        CHECK(turned_away > mesh.face_count() / 4);
+        CHECK(wrong == 0);
     }
 }

@@ -134,20 +134,35 @@ std::vector<glm::uvec2> boundary_edges(const Mesh& mesh, const std::vector<uint8
     return out;
 }
 
+bool faces_eye(const Mesh& mesh, const SurfaceFields& fields, const Face& t, glm::vec3 eye) {
+    for (int k = 0; k < 3; ++k)
+        if (glm::dot(fields.normals[t[k]], eye - mesh.positions[t[k]]) > 0) return true;
+    return false;
+}
+
 ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& q, glm::vec3 eye,
                              const std::vector<CreaseEdge>& creases, const LineExtractionOptions& o) {
     ExtractedLines lines;
     auto& contours = lines[int(LineType::Contour)];
-    if (o.contours || o.suggestive || o.suggestive_highlights || o.dwkr)
-        for (const Face& t : mesh.faces) extract_view_lines_of_face(mesh, t, fields, q, o, lines);
-    extract_curvature_lines(mesh, fields, o, lines);
-    extract_level_lines(mesh, fields, o, lines);
+    const bool view_lines = o.contours || o.suggestive || o.suggestive_highlights || o.dwkr;
+    const bool curvature_lines = o.parabolic || o.mean_zero || o.ridges || o.valleys;
+    const LevelValues levels = level_values(mesh, fields, o);
     ViewRidgeOptions vr;
     vr.apparent_ridges = o.apparent_ridges, vr.principal_highlights = o.principal_highlights;
     vr.ar_threshold = o.ar_threshold, vr.ph_threshold = o.ph_threshold;
     vr.feature_size = o.feature_size, vr.fade = o.fade;
-    extract_view_ridges(mesh, fields, eye, vr, lines[int(LineType::ApparentRidge)],
-                        lines[int(LineType::PrincipalHighlight)]);
+    const bool view_ridges = vr.apparent_ridges || vr.principal_highlights;
+    const std::vector<ViewRidgeVertex> ridge_vertices =
+        view_ridges ? view_ridge_vertices(mesh, fields, eye, o.feature_size) : std::vector<ViewRidgeVertex>{};
+    for (const Face& t : mesh.faces) {
+        if (view_lines) extract_view_lines_of_face(mesh, t, fields, q, o, lines);
+        if (o.cull_back_faces && !faces_eye(mesh, fields, t, eye)) continue;
+        if (curvature_lines) curvature_lines_of_face(mesh, t, fields, o, lines);
+        if (o.isophotes || o.topo) level_lines_of_face(mesh, t, levels, o, lines);
+        if (view_ridges)
+            view_ridges_of_face(mesh, t, fields, ridge_vertices, vr, lines[int(LineType::ApparentRidge)],
+                                lines[int(LineType::PrincipalHighlight)]);
+    }
     if (o.boundaries)
         for (const glm::uvec2& e : boundary_edges(mesh, fields.flags)) {
             const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];

@@ -80,6 +80,10 @@ struct LineExtractionOptions {
     float ar_threshold = 1.0f;    // dimensionless: apparent ridges where sqrt(q1) fs > it
     float ph_threshold = 0.2f;    // dimensionless: principal highlights where (kmax^2 - kmin^2) n.v fs^2 > it
     bool hidden_creases = false;  // every crease, also those turned away (--hidden-lines)
+    // As rtsc's back-face culling: no line but contours on a triangle turned
+    // away from the eye at all three corners (faces_eye; the renderer's
+    // default, off with --hidden-lines).
+    bool cull_back_faces = false;
     float sc_threshold = 0.05f;   // dimensionless s: suggestive contours (Dw kr fs^2 > s) and dwkr (= s)
     float sh_threshold = 0.1f;    // dimensionless: suggestive highlights where -Dw kr fs^2 > it
     float rv_threshold = 1.5f;    // dimensionless: ridges and valleys where |kmax| > it / fs
@@ -102,6 +106,10 @@ std::vector<CreaseEdge> crease_edges(const Mesh& mesh, const std::vector<glm::uv
                                      const std::vector<glm::uvec2>& crease_faces);
 
 using ExtractedLines = std::array<std::vector<LineSegment>, kLineTypeCount>;
+
+// Whether triangle t is turned towards `eye` at one corner or more: n.(eye - p) > 0
+// with the fields' normals (the test of LineExtractionOptions::cull_back_faces).
+bool faces_eye(const Mesh& mesh, const SurfaceFields& fields, const Face& t, glm::vec3 eye);
 
 // The segments of every selected type, seen from `eye` (model coordinates).
 // quantities: compute_view_quantities for the same eye; unreliable vertices
