@@ -114,6 +114,8 @@ void line_prefilter_bits(const Mesh& mesh, const SurfaceFields& fields, const Vi
     const bool has_view = view.kr.size() == n, has_ridges = ridges.size() == n;
     const float rv_limit = o.rv_threshold / o.feature_size;
     const bool all = only.size() != n;
+    const bool curvature = (o.parabolic || o.mean_zero || o.ridges || o.valleys) && fields.k1.size() == n &&
+                           fields.k2.size() == n;
     for (size_t v = begin; v < end; ++v) {
         if (!all && !only[v]) continue;
         uint64_t b = fields.unreliable(v) ? uint64_t(kUnreliable) : 0u;
@@ -125,22 +127,25 @@ void line_prefilter_bits(const Mesh& mesh, const SurfaceFields& fields, const Vi
             if (-view.sc_strength[v] - o.sh_threshold > 0) b |= kHighlight;
             if (view.ndotv[v] > 0) b |= kFront;
         }
-        if (fields.k1.size() == n && fields.k2.size() == n) {
+        if (curvature) {
             const float k1 = fields.k1[v], k2 = fields.k2[v];
             if (k1 * k2 > 0) b |= kGaussPositive;
             if (0.5f * (k1 + k2) > 0) b |= kMeanPositive;
             const float kmax = std::fabs(k1) >= std::fabs(k2) ? k1 : k2;
             if (std::fabs(kmax) - rv_limit > 0) b |= kRidgeStrong;
         }
-        if (has_ridges) {
+        if (has_ridges && ridge_options.apparent_ridges) {
             const ViewRidgeVertex& r = ridges[v];
             if (r.view_curv > ridge_options.ar_threshold) b |= kApparentStrong;
-            if (r.kmax < 0) b |= kKmaxNegative;
-            if (r.kmax > 0) b |= kKmaxPositive;
-            if (std::fabs(r.ph_strength) - ridge_options.ph_threshold > 0) b |= kPrincipalStrong;
             bool tm_unsure = false;
             b |= sign_bits(r.dq1 * r.t1, tm_unsure) << kTmSignShift;  // tm as apparent_ridge computes it
             if (tm_unsure) b |= kTmUnsure;
+        }
+        if (has_ridges && ridge_options.principal_highlights) {
+            const ViewRidgeVertex& r = ridges[v];
+            if (r.kmax < 0) b |= kKmaxNegative;
+            if (r.kmax > 0) b |= kKmaxPositive;
+            if (std::fabs(r.ph_strength) - ridge_options.ph_threshold > 0) b |= kPrincipalStrong;
             const float turn = dmax_turn(r.dmax);
             const float v_dmax = turn * r.v_dmax;
             bool dmax_unsure = !(v_dmax != 0.0f);
