@@ -90,6 +90,33 @@ ViewCurvatureOf<F> view_curvature_of(F k1, F k2, F Ca, F Cb, F Cc, F Cd, F nx, F
 
 }  // namespace
 
+namespace {
+
+// A ViewRidgeVertex from the view-dependent curvature o (F = float or Lanes),
+// in the order of operations of the glm expressions it replaces.
+template <typename F>
+struct RidgeVertexOf {
+    F view_curv, t1x, t1y, t1z, dq1, kmax, dmaxx, dmaxy, dmaxz, v_dmax, ph_strength;
+};
+template <typename F>
+RidgeVertexOf<F> ridge_vertex_of(const ViewCurvatureOf<F>& o, F k1, F k2, F d1x, F d1y, F d1z, F d2x, F d2y, F d2z,
+                                 float fs) {
+    RidgeVertexOf<F> r;
+    r.view_curv = root(larger<F>(o.q1, F{} + 0.0f)) * fs;
+    r.t1x = o.t1x * d1x + o.t1y * d2x, r.t1y = o.t1x * d1y + o.t1y * d2y, r.t1z = o.t1x * d1z + o.t1y * d2z;
+    r.dq1 = o.dq1;
+    // rtsc's curv1 is the curvature of larger magnitude (trimesh2's order), not kappa's k1.
+    const auto first = magnitude(k1) >= magnitude(k2);
+    r.kmax = first ? k1 : k2;
+    const F kmin = first ? k2 : k1;
+    r.dmaxx = first ? d1x : d2x, r.dmaxy = first ? d1y : d2y, r.dmaxz = first ? d1z : d2z;
+    r.v_dmax = o.vx * r.dmaxx + o.vy * r.dmaxy + o.vz * r.dmaxz;
+    r.ph_strength = (r.kmax * r.kmax - kmin * kmin) * o.c * fs * fs;
+    return r;
+}
+
+}  // namespace
+
 ViewCurvature view_curvature(float k1, float k2, glm::vec4 C, glm::vec3 n, glm::vec3 d1, glm::vec3 d2,
                              glm::vec3 to_eye) {
     const ViewCurvatureOf<float> o = view_curvature_of<float>(k1, k2, C.x, C.y, C.z, C.w, n.x, n.y, n.z, d1.x, d1.y,
@@ -219,52 +246,48 @@ void view_ridge_vertices(const Mesh& mesh, const SurfaceFields& f, glm::vec3 eye
                          std::vector<ViewRidgeVertex>& view) {
     const bool all = only.size() != view.size();
     auto needed = [&](size_t i) { return all || only[i] != 0; };
-    // Vertex i from lane j of the view-dependent curvature.
-    auto store = [&](size_t i, const auto& o, int j) {
-        auto lane = [j](auto x) -> float {
-            if constexpr (std::is_same_v<decltype(x), float>) return x;
-            else return x[j];
-        };
+    // Vertex i from lane j.
+    auto store = [&](size_t i, const auto& r, int j) {
+        using lanes::lane;
         ViewRidgeVertex& v = view[i];
-        v.view_curv = std::sqrt(std::max(lane(o.q1), 0.0f)) * fs;
-        v.t1 = lane(o.t1x) * f.d1[i] + lane(o.t1y) * f.d2[i];
-        v.dq1 = lane(o.dq1);
-        // rtsc's curv1 is the curvature of larger magnitude (trimesh2's order), not kappa's k1.
-        const bool first = std::fabs(f.k1[i]) >= std::fabs(f.k2[i]);
-        v.kmax = first ? f.k1[i] : f.k2[i];
-        const float kmin = first ? f.k2[i] : f.k1[i];
-        v.dmax = first ? f.d1[i] : f.d2[i];
-        const glm::vec3 dir(lane(o.vx), lane(o.vy), lane(o.vz));
-        v.v_dmax = glm::dot(dir, v.dmax);
-        v.ph_strength = (v.kmax * v.kmax - kmin * kmin) * lane(o.c) * fs * fs;
+        v.view_curv = lane(r.view_curv, j);
+        v.t1 = {lane(r.t1x, j), lane(r.t1y, j), lane(r.t1z, j)};
+        v.dq1 = lane(r.dq1, j);
+        v.kmax = lane(r.kmax, j);
+        v.dmax = {lane(r.dmaxx, j), lane(r.dmaxy, j), lane(r.dmaxz, j)};
+        v.v_dmax = lane(r.v_dmax, j);
+        v.ph_strength = lane(r.ph_strength, j);
     };
+    const glm::vec3 *p = mesh.positions.data(), *nrm = f.normals.data(), *d1 = f.d1.data(), *d2 = f.d2.data();
+    const glm::vec4* C = f.dcurv.data();
+    const float *k1 = f.k1.data(), *k2 = f.k2.data();
     size_t i = begin;
     for (; i + 4 <= end; i += 4) {  // four at once
         if (!needed(i) && !needed(i + 1) && !needed(i + 2) && !needed(i + 3)) continue;
-        auto gather = [&](auto get) { return Lanes{get(i), get(i + 1), get(i + 2), get(i + 3)}; };
+        using lanes::gather;
+        const Lanes K1 = gather(i, [&](size_t k) { return k1[k]; }), K2 = gather(i, [&](size_t k) { return k2[k]; });
+        const Lanes d1x = gather(i, [&](size_t k) { return d1[k].x; }), d1y = gather(i, [&](size_t k) { return d1[k].y; }),
+                    d1z = gather(i, [&](size_t k) { return d1[k].z; });
+        const Lanes d2x = gather(i, [&](size_t k) { return d2[k].x; }), d2y = gather(i, [&](size_t k) { return d2[k].y; }),
+                    d2z = gather(i, [&](size_t k) { return d2[k].z; });
         const auto o = view_curvature_of<Lanes>(
-            gather([&](size_t k) { return f.k1[k]; }), gather([&](size_t k) { return f.k2[k]; }),
-            gather([&](size_t k) { return f.dcurv[k].x; }), gather([&](size_t k) { return f.dcurv[k].y; }),
-            gather([&](size_t k) { return f.dcurv[k].z; }), gather([&](size_t k) { return f.dcurv[k].w; }),
-            gather([&](size_t k) { return f.normals[k].x; }), gather([&](size_t k) { return f.normals[k].y; }),
-            gather([&](size_t k) { return f.normals[k].z; }), gather([&](size_t k) { return f.d1[k].x; }),
-            gather([&](size_t k) { return f.d1[k].y; }), gather([&](size_t k) { return f.d1[k].z; }),
-            gather([&](size_t k) { return f.d2[k].x; }), gather([&](size_t k) { return f.d2[k].y; }),
-            gather([&](size_t k) { return f.d2[k].z; }), gather([&](size_t k) { return eye.x - mesh.positions[k].x; }),
-            gather([&](size_t k) { return eye.y - mesh.positions[k].y; }),
-            gather([&](size_t k) { return eye.z - mesh.positions[k].z; }));
+            K1, K2, gather(i, [&](size_t k) { return C[k].x; }), gather(i, [&](size_t k) { return C[k].y; }),
+            gather(i, [&](size_t k) { return C[k].z; }), gather(i, [&](size_t k) { return C[k].w; }),
+            gather(i, [&](size_t k) { return nrm[k].x; }), gather(i, [&](size_t k) { return nrm[k].y; }),
+            gather(i, [&](size_t k) { return nrm[k].z; }), d1x, d1y, d1z, d2x, d2y, d2z,
+            gather(i, [&](size_t k) { return eye.x - p[k].x; }), gather(i, [&](size_t k) { return eye.y - p[k].y; }),
+            gather(i, [&](size_t k) { return eye.z - p[k].z; }));
+        const auto r = ridge_vertex_of<Lanes>(o, K1, K2, d1x, d1y, d1z, d2x, d2y, d2z, fs);
         for (int j = 0; j < 4; ++j)
-            if (needed(i + size_t(j))) store(i + size_t(j), o, j);
+            if (needed(i + size_t(j))) store(i + size_t(j), r, j);
     }
     for (; i < end; ++i) {  // the rest one by one, with the same arithmetic
         if (!needed(i)) continue;
-        const glm::vec3 t = eye - mesh.positions[i];
-        const glm::vec4 C = f.dcurv[i];
-        const glm::vec3 n = f.normals[i], d1 = f.d1[i], d2 = f.d2[i];
-        store(i,
-              view_curvature_of<float>(f.k1[i], f.k2[i], C.x, C.y, C.z, C.w, n.x, n.y, n.z, d1.x, d1.y, d1.z, d2.x,
-                                       d2.y, d2.z, t.x, t.y, t.z),
-              0);
+        const glm::vec3 t = eye - p[i];
+        const auto o = view_curvature_of<float>(k1[i], k2[i], C[i].x, C[i].y, C[i].z, C[i].w, nrm[i].x, nrm[i].y,
+                                                nrm[i].z, d1[i].x, d1[i].y, d1[i].z, d2[i].x, d2[i].y, d2[i].z, t.x, t.y,
+                                                t.z);
+        store(i, ridge_vertex_of<float>(o, k1[i], k2[i], d1[i].x, d1[i].y, d1[i].z, d2[i].x, d2[i].y, d2[i].z, fs), 0);
     }
 }
 
