@@ -303,15 +303,19 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
 }
 
 InkArea CpuLinePass::draw(const CpuLines& lines, const std::vector<WindowSegment>& strokes, const FrameParams& frame,
-                          const RenderSettings& s, GLuint depth_texture, GLuint coverage_texture) {
+                          const RenderSettings& s, GLuint depth_texture, GLuint coverage_texture,
+                          const std::vector<float>* cpu_depth) {
     InkArea ink;
     const int w = int(frame.viewport.x), h = int(frame.viewport.y);
     if (coverage_texture != 0 && lines.segment_count + strokes.size() > 0) {
-        // On the CPU: the surface's depth read back, the coverage written over the cleared target.
-        depth_.resize(size_t(w) * size_t(h));
-        glBindTexture(GL_TEXTURE_2D, depth_texture);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth_.data());
+        // On the CPU: the surface's depth (read back unless drawn on the CPU), the coverage written over the
+        // cleared target.
+        if (!cpu_depth) {
+            depth_.resize(size_t(w) * size_t(h));
+            glBindTexture(GL_TEXTURE_2D, depth_texture);
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth_.data());
+        }
         std::vector<WindowSegment> all;
         all.reserve(lines.segment_count + strokes.size());
         for (const auto& b : lines.blocks) all.insert(all.end(), b.begin(), b.end());
@@ -320,7 +324,7 @@ InkArea CpuLinePass::draw(const CpuLines& lines, const std::vector<WindowSegment
         p.width = w, p.height = h, p.line_width = s.line_width, p.hidden_lines = s.hidden_lines;
         p.depth_params = glm::vec2(frame.projection[2][2], frame.projection[3][2]);
         coverage_.assign(size_t(w) * size_t(h), 0);
-        rasterize_lines(all, depth_, p, coverage_);
+        rasterize_lines(all, cpu_depth ? *cpu_depth : depth_, p, coverage_);
         glBindTexture(GL_TEXTURE_2D, coverage_texture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RED, GL_UNSIGNED_BYTE, coverage_.data());

@@ -54,10 +54,12 @@ public:
     // Into the bound framebuffer, with the line passes' blending and depth
     // texture bound. coverage_texture: 0, or the bound framebuffer's R8
     // colour texture, still cleared, to rasterise on the CPU into instead,
-    // with `strokes` (render/stroke_pass.h) too (they are ignored with 0).
-    // Returns where it drew.
+    // with `strokes` (render/stroke_pass.h) too (they are ignored with 0),
+    // against cpu_depth when given (render/depth_raster.h), else the depth
+    // texture read back. Returns where it drew.
     InkArea draw(const CpuLines& lines, const std::vector<WindowSegment>& strokes, const FrameParams& frame,
-                 const RenderSettings& settings, GLuint depth_texture, GLuint coverage_texture);
+                 const RenderSettings& settings, GLuint depth_texture, GLuint coverage_texture,
+                 const std::vector<float>* cpu_depth = nullptr);
 
 private:
     void ensure_indices(size_t quads);  // the index buffer holds two triangles for at least `quads` quads

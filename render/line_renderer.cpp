@@ -58,7 +58,7 @@ void LineRenderer::begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& f
 
 InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool cpu_lines,
                            GLuint surface_depth_texture, GLuint coverage_texture,
-                           const std::vector<WindowSegment>& strokes) {
+                           const std::vector<WindowSegment>& strokes, const std::vector<float>* cpu_depth) {
     InkArea ink;
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -82,7 +82,7 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     if (cpu_lines) {
         // Every kind drawn by the four passes below.
         const CpuLines lines = pending_cpu_lines_.valid() ? pending_cpu_lines_.get() : cpu_lines_.prepare(mesh, frame, s);
-        ink = cpu_lines_.draw(lines, strokes, frame, s, surface_depth_texture, coverage_texture);
+        ink = cpu_lines_.draw(lines, strokes, frame, s, surface_depth_texture, coverage_texture, cpu_depth);
     } else if (contours || s.lines.suggestive || highlights || s.lines.dwkr) {
         ink.anywhere = true;
         // The variant that can also draw highlights and Dw kr lines only when they are on.
@@ -159,8 +159,17 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         level_lines_.set("u_count", levels.count);
         draw_culled([&] { return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels); });
     }
+    // The GL passes below test against the depth texture: a depth drawn on the CPU goes there first.
+    const bool glyphs = s.vectors != 0 && mesh.vertex_count() > 0;
+    const bool creases = (s.lines.creases || contours) && mesh.crease_count() > 0;
+    if (cpu_depth && cpu_depth->size() == size_t(frame.viewport.x) * size_t(frame.viewport.y) && (glyphs || creases)) {
+        glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLsizei(frame.viewport.x), GLsizei(frame.viewport.y), GL_DEPTH_COMPONENT,
+                        GL_FLOAT, cpu_depth->data());
+    }
     // Direction glyphs, 10 pixels long, at about one vertex per 600 pixels of the image.
-    if (s.vectors != 0 && mesh.vertex_count() > 0) {
+    if (glyphs) {
         ink.anywhere = true;
         set_common(vectors_, mesh, frame, s);
         vectors_.set("u_vectors", s.vectors);
@@ -169,7 +178,7 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         vectors_.set("u_stride", int(std::max<size_t>(1, mesh.vertex_count() / wanted)));
         mesh.draw_points();
     }
-    if ((s.lines.creases || contours) && mesh.crease_count() > 0) {
+    if (creases) {
         ink.anywhere = true;
         set_common(creases_, mesh, frame, s);
         creases_.set("u_creases", int(s.lines.creases));

@@ -27,10 +27,12 @@ public:
     // those lines into itself (software GL, render/line_raster.h).
     // strokes (render/stroke_pass.h): drawn with the CPU lines when those are
     // rasterised on the CPU (cpu_lines and coverage_texture), else ignored.
-    // Returns where lines were drawn.
+    // cpu_depth: the surface depth when it was drawn on the CPU
+    // (render/depth_raster.h; then surface_depth_texture holds none until a
+    // GL pass needs it, when it is uploaded). Returns where lines were drawn.
     InkArea draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
                  GLuint surface_depth_texture, GLuint coverage_texture = 0,
-                 const std::vector<WindowSegment>& strokes = {});
+                 const std::vector<WindowSegment>& strokes = {}, const std::vector<float>* cpu_depth = nullptr);
 
 private:
     void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,

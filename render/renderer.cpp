@@ -18,6 +18,7 @@ Renderer::Renderer() {
     software_gl_ = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
                    renderer.find("SwiftShader") != std::string::npos;
     cpu_line_raster_ = software_gl_;
+    cpu_surface_depth_ = software_gl_;
 }
 Renderer::~Renderer() = default;
 
@@ -71,7 +72,12 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     if (mesh_) {
         frame = FrameParams::make(camera, mesh_->bounds(), w, h);
         if (any_lines && cpu_lines) line_pass_.begin_cpu_lines(*mesh_, frame, s);  // made while the surface is drawn
-        surface_pass_.draw(*mesh_, frame, s);
+        // White paper under lines drawn on the CPU: its depth is all the frame needs of it.
+        const bool depth_on_cpu = cpu_surface_depth_ && cpu_line_raster_ && cpu_lines && !msaa && surface_is_background(s);
+        cpu_depth_ = depth_on_cpu ? &depth_raster_.draw(*mesh_, frame, back_face_culling_) : nullptr;
+        if (!depth_on_cpu) surface_pass_.draw(*mesh_, frame, s);
+    } else {
+        cpu_depth_ = nullptr;
     }
     if (msaa) resolve(surface_ms_fb_, surface_fb_);
     const std::vector<Stroke> hatching = mesh_ && s.hatching != Hatching::None ? hatch_strokes(frame, s)
@@ -88,7 +94,8 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     const bool cpu_raster = cpu_line_raster_ && cpu_lines;
     if (any_lines || (cpu_raster && !strokes.empty()))
         ink_ = line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture(),
-                               cpu_line_raster_ ? lines_fb_.color_texture() : 0, cpu_raster ? strokes : none);
+                               cpu_line_raster_ ? lines_fb_.color_texture() : 0, cpu_raster ? strokes : none,
+                               cpu_depth_);
     else
         ink_ = InkArea();
     if (!cpu_raster && !strokes.empty()) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "render/camera.h"
+#include "render/depth_raster.h"
 #include "render/framebuffer.h"
 #include "render/hatch_field.h"
 #include "render/line_renderer.h"
@@ -42,7 +43,7 @@ public:
 
     // The surface depth of the last frame drawn (window depth, 1 = background,
     // bottom row first): what the line passes test visibility against.
-    std::vector<float> surface_depth() const { return surface_fb_.read_depth(); }
+    std::vector<float> surface_depth() const { return cpu_depth_ ? *cpu_depth_ : surface_fb_.read_depth(); }
 
     // Draws one view offscreen, the lines blended over the surface in its own
     // framebuffer (offscreen_framebuffer(), to copy from); render_image also
@@ -67,7 +68,12 @@ public:
     void set_back_face_culling(bool on) {
         surface_pass_.set_back_face_culling(on);
         hatch_field_.set_back_face_culling(on);
+        back_face_culling_ = on;
     }
+    // Whether the depth of a surface the colour of the paper is drawn on the
+    // CPU when the lines are (render/depth_raster.h; software GL by
+    // default). For tests and benchmarks, to compare with the GL's.
+    void set_cpu_surface_depth(bool on) { cpu_surface_depth_ = on; }
 
 private:
     void ensure_buffers(int width, int height, bool msaa);
@@ -88,6 +94,10 @@ private:
     InkArea ink_;  // where this frame's lines are in lines_fb_
     bool software_gl_ = false;  // llvmpipe and the like: RenderSettings::line_extraction auto means CPU
     bool cpu_line_raster_ = false;  // software_gl_ unless set_cpu_line_raster
+    bool cpu_surface_depth_ = false;  // software_gl_ unless set_cpu_surface_depth
+    bool back_face_culling_ = true;
+    DepthRaster depth_raster_;
+    const std::vector<float>* cpu_depth_ = nullptr;  // the last frame's surface depth when drawn on the CPU (in depth_raster_)
 };
 
 // Headless convenience: renders into an offscreen RGBA8 framebuffer of
