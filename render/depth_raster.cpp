@@ -1,10 +1,12 @@
 #include "render/depth_raster.h"
 
+#include "geometry/lines/lanes.h"
 #include "geometry/parallel.h"
 #include "render/back_face_culling.h"
 #include "render/cluster_culling.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 
 namespace kappa::render {
@@ -72,7 +74,7 @@ void fill(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, f
         // The row's pixels inside every edge's half plane, widened by a pixel
         // (the exact test below decides): E = sign (r - dy (px - ax)).
         float lo = float(x0), hi = float(x1);
-        for (int k = 0; k < 3 && x1 - x0 > 4; ++k) {  // narrow triangles: the box is as cheap
+        for (int k = 0; k < 3 && x1 - x0 > 16; ++k) {  // narrow triangles: the box is as cheap
             const float slope = -edges[k].sign * edges[k].dy;  // dE/dpx
             if (slope == 0.0f) continue;
             const float root = edges[k].ax + r[k] / edges[k].dy;  // E = 0
@@ -81,7 +83,26 @@ void fill(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, f
         }
         if (!(lo <= hi)) continue;
         float* row = t.depth + size_t(y) * size_t(t.width);
-        for (int x = int(lo); x <= int(hi); ++x) {
+        int x = int(lo);
+        // Four pixels at a time (geometry/lines/lanes.h: the same operations, the same bits).
+        using lanes::Lanes;
+        using Mask = int __attribute__((vector_size(16)));
+        for (; x + 3 <= int(hi); x += 4) {
+            const Lanes px = float(x) + Lanes{0.5f, 1.5f, 2.5f, 3.5f};
+            Lanes e[3];
+            Mask in = Mask{} - 1;
+            for (int k = 0; k < 3; ++k) {
+                const Edge& g = edges[k];
+                e[k] = g.sign * (r[k] - g.dy * (px - g.ax));
+                in &= (e[k] > 0.0f) | ((e[k] == 0.0f) & (Mask{} - int(g.own)));
+            }
+            const Lanes z = a.z + (e[1] * inv_area) * dzb + (e[2] * inv_area) * dzc;
+            Lanes d;
+            std::memcpy(&d, row + x, sizeof d);
+            d = (in & (z < d)) ? z : d;
+            std::memcpy(row + x, &d, sizeof d);
+        }
+        for (; x <= int(hi); ++x) {
             const float px = float(x) + 0.5f;
             const float e0 = edges[0].at(r[0], px), e1 = edges[1].at(r[1], px), e2 = edges[2].at(r[2], px);
             if (!(edges[0].inside(e0) && edges[1].inside(e1) && edges[2].inside(e2))) continue;
