@@ -9,13 +9,15 @@
 //   instead of the raw 1-ring fields; --only: Lambert and the configurations whose name contains NAME,
 //   e.g. to profile one; --no-msaa: only the frames without multisampling)
 //   --line-pass: also the CPU line pass alone (render/cpu_lines.h: extraction, chaining and merging,
-//   no drawing and nothing else running), contours + suggestive and every line type, wall and CPU
+//   no drawing and nothing else running), contours + suggestive and every line type, and the CPU
+//   depth raster alone (render/depth_raster.h), wall and CPU
 #include "geometry/default_model.h"
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/surface_analysis.h"
 #include "render/detail_fields.h"
 #include "render/cpu_lines.h"
+#include "render/depth_raster.h"
 #include "render/egl_context.h"
 #include "render/frame_params.h"
 #include "render/framebuffer.h"
@@ -83,6 +85,25 @@ FrameTime median_line_pass_ms(const render::MeshBuffers& mesh, const render::Cam
         wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
     if (segments == 0) std::printf("  (no segments)\n");
+    std::sort(wall.begin(), wall.end());
+    std::sort(cpu.begin(), cpu.end());
+    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+}
+
+// The surface depth drawn on the CPU alone (render/depth_raster.h).
+FrameTime median_depth_raster_ms(const render::MeshBuffers& mesh, const render::Camera& camera, int width, int height,
+                                 int frames) {
+    render::DepthRaster raster;
+    const auto frame = render::FrameParams::make(camera, mesh.bounds(), width, height);
+    raster.draw(mesh, frame, true);  // warm-up: buffers
+    std::vector<double> wall, cpu;
+    for (int i = 0; i < frames; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const double c0 = cpu_ms();
+        raster.draw(mesh, frame, true);
+        cpu.push_back(cpu_ms() - c0);
+        wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
     std::sort(wall.begin(), wall.end());
     std::sort(cpu.begin(), cpu.end());
     return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
@@ -210,6 +231,10 @@ int main(int argc, char** argv) {
                 const FrameTime t = median_line_pass_ms(*renderer.mesh(), camera, s, width, height, frames);
                 std::printf("  CPU line pass alone, %-20s wall %8.2f ms  cpu %8.2f ms\n", c.name, t.wall_ms, t.cpu_ms);
             }
+        if (line_pass) {
+            const FrameTime t = median_depth_raster_ms(*renderer.mesh(), camera, width, height, frames);
+            std::printf("  CPU depth raster alone                    wall %8.2f ms  cpu %8.2f ms\n", t.wall_ms, t.cpu_ms);
+        }
     }
     return 0;
 }

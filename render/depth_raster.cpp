@@ -55,14 +55,24 @@ struct Edge {
     bool inside(float e) const { return e > 0.0f || (e == 0.0f && own); }
 };
 
+// floor and ceiling of v, |v| < 2^31, without a library call (x86-64's
+// baseline has no rounding instruction: std::floor is a call, per triangle).
+int floor_int(float v) {
+    const int i = int(v);
+    return float(i) > v ? i - 1 : i;
+}
+int ceil_int(float v) {
+    const int i = int(v);
+    return float(i) < v ? i + 1 : i;
+}
+
 // One triangle, counter-clockwise in the window, into t with GL_LESS.
 void fill(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, float area, const Target& t) {
     const float min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
     const float min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
-    const int x0 = std::max(t.rect.x, int(std::ceil(min_x - 0.5f)));
-    const int x1 = std::min(t.rect.z - 1, int(std::floor(max_x - 0.5f)));
-    const int y0 = std::max(t.rect.y, int(std::ceil(min_y - 0.5f)));
-    const int y1 = std::min(t.rect.w - 1, int(std::floor(max_y - 0.5f)));
+    // Clipped to the view volume: within a pixel of the viewport.
+    const int x0 = std::max(t.rect.x, ceil_int(min_x - 0.5f)), x1 = std::min(t.rect.z - 1, floor_int(max_x - 0.5f));
+    const int y0 = std::max(t.rect.y, ceil_int(min_y - 0.5f)), y1 = std::min(t.rect.w - 1, floor_int(max_y - 0.5f));
     if (x0 > x1 || y0 > y1) return;
     glm::ivec4& drawn = *t.drawn;
     drawn = {std::min(drawn.x, x0), std::min(drawn.y, y0), std::max(drawn.z, x1 + 1), std::max(drawn.w, y1 + 1)};
@@ -78,8 +88,12 @@ void fill(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, f
             const float slope = -edges[k].sign * edges[k].dy;  // dE/dpx
             if (slope == 0.0f) continue;
             const float root = edges[k].ax + r[k] / edges[k].dy;  // E = 0
-            if (slope > 0.0f) lo = std::max(lo, std::floor(root - 0.5f) - 1.0f);
-            else hi = std::min(hi, std::ceil(root - 0.5f) + 1.0f);
+            if (!(root > lo - 2.0f && root < hi + 2.0f)) {  // beyond the box (or NaN): no narrowing, or none inside
+                if (slope > 0.0f ? root >= hi + 2.0f : root <= lo - 2.0f) lo = 1.0f, hi = 0.0f;
+                continue;
+            }
+            if (slope > 0.0f) lo = std::max(lo, float(floor_int(root - 0.5f) - 1));
+            else hi = std::min(hi, float(ceil_int(root - 0.5f) + 1));
         }
         if (!(lo <= hi)) continue;
         float* row = t.depth + size_t(y) * size_t(t.width);
@@ -199,8 +213,10 @@ const std::vector<float>& DepthRaster::draw(const MeshBuffers& mesh, const Frame
     });
     // One polygon (window vertices, any winding) with the piece's culling, fanned into triangles.
     auto fill_polygon = [&](const WindowVertex* w, int n, const Piece& piece, float* target, glm::ivec4* drawn) {
-        float area2 = 0;  // twice the signed area (shoelace); > 0: counter-clockwise
-        for (int i = 0; i < n; ++i) area2 += w[i].x * w[(i + 1) % n].y - w[(i + 1) % n].x * w[i].y;
+        float area2 = 0;  // twice the signed area; > 0: counter-clockwise
+        if (n == 3) area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
+        else
+            for (int i = 0; i < n; ++i) area2 += w[i].x * w[(i + 1) % n].y - w[(i + 1) % n].x * w[i].y;  // shoelace
         if (!(area2 != 0.0f)) return;
         const bool front = (area2 > 0) != culling.mirrored;
         if ((piece.cull == Cull::Back && !front) || (piece.cull == Cull::Front && front)) return;
