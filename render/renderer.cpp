@@ -64,16 +64,18 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    FrameParams frame;
     const bool cpu_lines = s.line_extraction == LineExtraction::Cpu ||
                            (s.line_extraction == LineExtraction::Auto && software_gl_);
     const bool any_lines = mesh_ && (s.lines.any() || s.vectors != 0);
+    // White paper under lines drawn on the CPU: its depth is all the frame needs of it, drawn on the
+    // CPU (the GL's depth buffer is then not cleared: a GL pass that needs it gets the CPU's uploaded).
+    const bool depth_on_cpu =
+        mesh_ && cpu_surface_depth_ && cpu_line_raster_ && cpu_lines && !msaa && surface_is_background(s);
+    glClear(depth_on_cpu ? GL_COLOR_BUFFER_BIT : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    FrameParams frame;
     if (mesh_) {
         frame = FrameParams::make(camera, mesh_->bounds(), w, h);
         if (any_lines && cpu_lines) line_pass_.begin_cpu_lines(*mesh_, frame, s);  // made while the surface is drawn
-        // White paper under lines drawn on the CPU: its depth is all the frame needs of it.
-        const bool depth_on_cpu = cpu_surface_depth_ && cpu_line_raster_ && cpu_lines && !msaa && surface_is_background(s);
         cpu_depth_ = depth_on_cpu ? &depth_raster_.draw(*mesh_, frame, back_face_culling_) : nullptr;
         if (!depth_on_cpu) surface_pass_.draw(*mesh_, frame, s);
     } else {

@@ -11,6 +11,7 @@
 
 #include "geometry/feature_size.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/parallel.h"
 #include "geometry/surface_analysis.h"
 
 #include <algorithm>
@@ -45,6 +46,11 @@ TEST_CASE("the surface depth drawn on the CPU is the GL's", "[render][depth-rast
         renderer.set_cpu_surface_depth(true);
         render::render_to_image(renderer, camera, s, w, h);
         const std::vector<float> cpu = renderer.surface_depth();
+        // Ranges of faces into buffers merged by the minimum: the same depths on one thread.
+        set_thread_count(1);
+        render::render_to_image(renderer, camera, s, w, h);
+        CHECK(renderer.surface_depth() == cpu);
+        set_thread_count(0);
         REQUIRE(gl.size() == cpu.size());
         // Covered by one only, or at different depths: a pixel centre within rounding of an edge of the
         // outline (llvmpipe snaps vertices to 1/256 pixel), where the depth jumps to what lies behind.
