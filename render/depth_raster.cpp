@@ -101,10 +101,13 @@ void fill(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, f
         // Four pixels at a time (geometry/lines/lanes.h: the same operations, the same bits).
         using lanes::Lanes;
         using Mask = int __attribute__((vector_size(16)));
-        for (; x + 3 <= int(hi); x += 4) {
+        // Four lanes while they stay within the row (lanes past hi are written back unchanged:
+        // the buffer is this range's own).
+        const int last = int(hi);
+        for (; x <= last && x + 3 < t.width; x += 4) {
             const Lanes px = float(x) + Lanes{0.5f, 1.5f, 2.5f, 3.5f};
             Lanes e[3];
-            Mask in = Mask{} - 1;
+            Mask in = Mask{x, x + 1, x + 2, x + 3} <= last;
             for (int k = 0; k < 3; ++k) {
                 const Edge& g = edges[k];
                 e[k] = g.sign * (r[k] - g.dy * (px - g.ax));
