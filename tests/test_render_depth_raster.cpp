@@ -9,10 +9,7 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/feature_size.h"
-#include "geometry/io/mesh_io.h"
 #include "geometry/parallel.h"
-#include "geometry/surface_analysis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,10 +17,7 @@
 using namespace kappa;
 
 TEST_CASE("the surface depth drawn on the CPU is the GL's", "[render][depth-raster]") {
-    const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
-    const SurfaceFields fields = compute_surface_fields(mesh);
-    const float fs = feature_size(mesh, fields);
-    const auto b = render::bounding_sphere(mesh);
+    const auto b = test::upload_shared_bunny();
     const float r = b.radius;
     struct View {
         glm::vec3 eye, target;
@@ -34,7 +28,6 @@ TEST_CASE("the surface depth drawn on the CPU is the GL's", "[render][depth-rast
                           {b.center + glm::vec3(0.1f, 0.2f, 0.55f) * r, b.center, true},     // inside the sphere, near plane cuts
                           {b.center + glm::vec3(-2.0f, 0.5f, -1.5f) * r, b.center, false}};  // every face
     render::Renderer& renderer = test::renderer();
-    renderer.set_mesh(mesh, fields, fs);
     const render::RenderSettings s = test::lines_only(render::LineSelection{true, true, false, false});
     const int w = 320, h = 240;
     for (const View& v : views) {
