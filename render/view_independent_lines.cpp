@@ -35,13 +35,8 @@ void ViewIndependentLines::use(const MeshBuffers& mesh, const LineExtractionOpti
     if (fields_version_ == mesh.fields_version() && same(o, options_) && !blocks_.empty()) return;
     fields_version_ = mesh.fields_version();
     options_ = o;
-    any_ = o.ridges || o.valleys || o.parabolic || o.mean_zero || o.topo;
     const Mesh& m = mesh.cpu_mesh();
-    heights_.clear();
-    if (o.topo) {
-        heights_.resize(m.vertex_count());
-        for (size_t v = 0; v < heights_.size(); ++v) heights_[v] = m.positions[v].y;
-    }
+    levels_ = o.topo ? level_values(m, SurfaceFields{}, o) : LevelValues{};  // heights only: isophotes are off
     blocks_.clear();
     blocks_.resize((m.face_count() + kLineBlockFaces - 1) / kLineBlockFaces);
 }
@@ -51,7 +46,6 @@ const ViewIndependentLines::Block& ViewIndependentLines::block(uint32_t b, const
     if (kept) return *kept;
     kept = std::make_unique<Block>();
     thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
-    const LevelValues levels{{}, heights_};
     const uint32_t first = b * kLineBlockFaces;
     const uint32_t end = uint32_t(std::min<size_t>(m.face_count(), size_t(first) + kLineBlockFaces));
     kept->face_start.assign(kLineBlockFaces + 1, 0);
@@ -59,7 +53,7 @@ const ViewIndependentLines::Block& ViewIndependentLines::block(uint32_t b, const
         for (auto& segments : found) segments.clear();
         if (options_.ridges || options_.valleys || options_.parabolic || options_.mean_zero)
             curvature_lines_of_face(m, m.faces[f], fields, options_, found);
-        if (options_.topo) level_lines_of_face(m, m.faces[f], levels, options_, found);
+        if (options_.topo) level_lines_of_face(m, m.faces[f], levels_, options_, found);
         for (int type = 0; type < kLineTypeCount; ++type)
             for (const LineSegment& s : found[size_t(type)]) kept->segments.push_back(s), kept->types.push_back(uint8_t(type));
         kept->face_start[f - first + 1] = uint32_t(kept->segments.size());

@@ -31,8 +31,6 @@ public:
     // `options` that these types read (which are on, rv_threshold, fade,
     // feature_size, topo_levels) changed since the last call.
     void use(const MeshBuffers& mesh, const LineExtractionOptions& options);
-    // Whether any view-independent type is on.
-    bool any() const { return any_; }
     // Appends the segments of faces [first, first + count), all in one block,
     // to `lines` (by type, in face order), extracting the block's on first use;
     // with cull_back_faces, not those of faces turned away from `eye`
@@ -50,8 +48,7 @@ private:
 
     uint64_t fields_version_ = 0;
     LineExtractionOptions options_;
-    bool any_ = false;
-    std::vector<float> heights_;  // topographic lines' values (y)
+    LevelValues levels_;  // topographic lines' values (heights)
     std::vector<std::unique_ptr<Block>> blocks_;
 };
 
