@@ -2,12 +2,11 @@
 
 #include "geometry/lines/lanes.h"
 #include "geometry/parallel.h"
-#include "render/back_face_culling.h"
-#include "render/cluster_culling.h"
+#include "render/surface_renderer.h"
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 
 namespace kappa::render {
 
@@ -183,18 +182,15 @@ const std::vector<float>& DepthRaster::draw(const MeshBuffers& mesh, const Frame
     const Mesh& m = mesh.cpu_mesh();
     if (pixels == 0 || m.face_count() == 0) return depth;
 
-    // The pieces draw_surface_triangles would send.
+    // What draw_surface_triangles sends.
+    const SurfaceTriangles triangles = surface_triangles(mesh, frame, cull);
     std::vector<Piece> pieces;
     const glm::ivec4 whole(0, 0, width, height);
-    const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
-    if (!culling.cull || !cull) {
-        pieces.push_back({0, uint32_t(m.face_count()), Cull::None, whole});
-    } else {
-        for (const FaceRun& r : front_surface_runs(mesh.clusters(), frame)) pieces.push_back({r.first, r.count, Cull::Back, whole});
-        const glm::ivec4 h = culling.holes;
-        const glm::ivec4 holes(std::max(h.x, 0), std::max(h.y, 0), std::min(h.x + h.z, width), std::min(h.y + h.w, height));
-        for (const FaceRun& r : culling.back_runs) pieces.push_back({r.first, r.count, Cull::Front, holes});
-    }
+    for (const FaceRun& r : triangles.front)
+        pieces.push_back({r.first, r.count, triangles.cull ? Cull::Back : Cull::None, whole});
+    const glm::ivec4 h = triangles.holes;
+    const glm::ivec4 holes(std::max(h.x, 0), std::max(h.y, 0), std::min(h.x + h.z, width), std::min(h.y + h.w, height));
+    for (const FaceRun& r : triangles.back) pieces.push_back({r.first, r.count, Cull::Front, holes});
     size_t faces = 0;
     for (const Piece& p : pieces) faces += p.count;
     if (faces == 0) return depth;
@@ -204,13 +200,12 @@ const std::vector<float>& DepthRaster::draw(const MeshBuffers& mesh, const Frame
         const float inv_w = 1.0f / c.w;
         return WindowVertex{(c.x * inv_w + 1.0f) * half_w, (c.y * inv_w + 1.0f) * half_h, (c.z * inv_w) * 0.5f + 0.5f};
     };
-    // Per vertex once: clip coordinates, which planes it is beyond, and (inside them all) its window position.
-    clip_.resize(m.vertex_count());
+    // Per vertex once: which planes it is beyond and (inside them all) its window position.
+    auto clip = [&](uint32_t v) { return frame.mvp * glm::vec4(m.positions[v], 1.0f); };
     window_.resize(m.vertex_count());
     outside_.resize(m.vertex_count());
     parallel_for(m.vertex_count(), [&](size_t v) {
-        const glm::vec4 c = frame.mvp * glm::vec4(m.positions[v], 1.0f);
-        clip_[v] = c;
+        const glm::vec4 c = clip(uint32_t(v));
         outside_[v] = uint8_t(outside(c));
         if (!outside_[v]) window_[v] = to_window(c);
     });
@@ -221,7 +216,7 @@ const std::vector<float>& DepthRaster::draw(const MeshBuffers& mesh, const Frame
         else
             for (int i = 0; i < n; ++i) area2 += w[i].x * w[(i + 1) % n].y - w[(i + 1) % n].x * w[i].y;  // shoelace
         if (!(area2 != 0.0f)) return;
-        const bool front = (area2 > 0) != culling.mirrored;
+        const bool front = (area2 > 0) != triangles.mirrored;
         if ((piece.cull == Cull::Back && !front) || (piece.cull == Cull::Front && front)) return;
         const Target t{target, width, piece.rect, drawn};
         for (int i = 1; i + 1 < n; ++i) {
@@ -251,7 +246,7 @@ const std::vector<float>& DepthRaster::draw(const MeshBuffers& mesh, const Frame
                     fill_polygon(w, 3, piece, buffer.data(), drawn);
                     continue;
                 }
-                const glm::vec4 c[3] = {clip_[f[0]], clip_[f[1]], clip_[f[2]]};
+                const glm::vec4 c[3] = {clip(f[0]), clip(f[1]), clip(f[2])};  // the same bits as above
                 glm::vec4 polygon[9];
                 const int n = clip_polygon(c, polygon);
                 WindowVertex w[9];

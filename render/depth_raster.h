@@ -1,9 +1,9 @@
 // The surface's depth drawn on the CPU, for software GL when the surface is
 // the paper (surface_is_background): the lines need only its depth, and
 // llvmpipe sets up every triangle on the calling thread. The triangles are
-// those draw_surface_triangles sends (front faces of the clusters in view
-// and, clipped to the holes' rectangles, the back faces that can show
-// through them; or every face), clipped to the view volume and filled by
+// those draw_surface_triangles sends (surface_triangles: front faces of the
+// clusters in view and, within the holes' rectangle, the back faces that can
+// show through them; or every face), clipped to the view volume and filled by
 // the GL's rules: pixel centres at (x + 1/2, y + 1/2), window depth
 // interpolated linearly across the window, the nearest kept (GL_LESS
 // against a clear of 1). Edges shared by two triangles are filled by one
@@ -32,9 +32,8 @@ public:
     const std::vector<float>& draw(const MeshBuffers& mesh, const FrameParams& frame, bool cull);
 
 private:
-    // Per vertex, kept between frames: clip coordinates, the view-volume planes
-    // it is beyond (bits), window position (x, y pixels, depth) where inside.
-    std::vector<glm::vec4> clip_;
+    // Per vertex, kept between frames: the view-volume planes it is beyond
+    // (bits), window position (x, y pixels, depth) where inside them all.
     std::vector<uint8_t> outside_;
     std::vector<glm::vec3> window_;
     // Per range of faces (the first is the result), kept between frames with

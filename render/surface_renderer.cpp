@@ -38,26 +38,41 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     if (depth_only) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+SurfaceTriangles surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull) {
+    SurfaceTriangles t;
+    BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
+    if (!culling.cull || !cull) {
+        t.front = {{0, uint32_t(mesh.face_count())}};  // every face
+        return t;
+    }
+    // Front faces everywhere, back faces only where a hole is seen (geometry/back_faces.h).
+    t.cull = true;
+    t.mirrored = culling.mirrored;
+    t.front = front_surface_runs(mesh.clusters(), frame);
+    t.back = std::move(culling.back_runs);
+    t.holes = culling.holes;
+    return t;
+}
+
 void draw_surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull, bool positions_only) {
     auto draw = [&](const std::vector<FaceRun>& runs) {
         if (positions_only) mesh.draw_triangle_positions(runs);
         else mesh.draw_triangles(runs);
     };
-    const BackFaceCulling culling = back_face_culling(mesh.back_faces(), mesh.bounds(), mesh.clusters(), frame);
-    if (!culling.cull || !cull) {
-        draw({{0, uint32_t(mesh.face_count())}});  // every face
+    const SurfaceTriangles t = surface_triangles(mesh, frame, cull);
+    if (!t.cull) {
+        draw(t.front);
         return;
     }
-    // Front faces everywhere, back faces only where a hole is seen (geometry/back_faces.h).
     glEnable(GL_CULL_FACE);
-    glFrontFace(culling.mirrored ? GL_CW : GL_CCW);
+    glFrontFace(t.mirrored ? GL_CW : GL_CCW);
     glCullFace(GL_BACK);
-    draw(front_surface_runs(mesh.clusters(), frame));
-    if (!culling.back_runs.empty()) {
+    draw(t.front);
+    if (!t.back.empty()) {
         glCullFace(GL_FRONT);
         glEnable(GL_SCISSOR_TEST);
-        glScissor(culling.holes.x, culling.holes.y, culling.holes.z, culling.holes.w);
-        draw(culling.back_runs);
+        glScissor(t.holes.x, t.holes.y, t.holes.z, t.holes.w);
+        draw(t.back);
         glDisable(GL_SCISSOR_TEST);
     }
     glFrontFace(GL_CCW);

@@ -14,12 +14,22 @@ namespace kappa::render {
 // colour is then not written, and multisampling has no edge to smooth.
 bool surface_is_background(const RenderSettings& settings);
 
-// The triangles of the surface into the bound framebuffer, depth tested:
-// every face, or with `cull` (where render/back_face_culling.h allows it)
-// the front faces of the clusters in view and, scissored to the holes, the
-// back faces that can show through them: the same depth either way.
-// positions_only: from the buffer of positions alone
-// (MeshBuffers::draw_triangle_positions, the paper program).
+// The triangles the surface pass sends: every face, or with `cull` (where
+// render/back_face_culling.h allows it) the front faces of the clusters in
+// view and, within the holes' rectangle, the back faces that can show
+// through them: the same depth either way.
+struct SurfaceTriangles {
+    bool cull = false;      // false: every face, no face culling
+    bool mirrored = false;  // front faces are clockwise on screen
+    std::vector<FaceRun> front, back;  // with cull: the runs drawn front faces only, back faces only
+    glm::ivec4 holes{0};    // the back faces' rectangle (x, y, width, height; pixels, bottom-left origin)
+};
+SurfaceTriangles surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull);
+
+// Those triangles into the bound framebuffer, depth tested (the back faces
+// scissored to the holes). positions_only: from the buffer of positions
+// alone (MeshBuffers::draw_triangle_positions, the paper program). On the
+// CPU: render/depth_raster.h.
 void draw_surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull, bool positions_only);
 
 class SurfaceRenderer {
