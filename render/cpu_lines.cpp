@@ -74,11 +74,12 @@ struct MaskedRun {
     uint8_t families;
 };
 
-// Faces [block * kBlockFaces, (block + 1) * kBlockFaces) and the runs in it
-// that need extraction (render/view_independent_lines.h keeps segments by the same blocks). Blocks are fixed, whatever the culling keeps, so
-// segments are chained and merged on screen (render/screen_merge.h) the
-// same way with culling as without: culled clusters hold no lines.
-constexpr uint32_t kBlockFaces = kLineBlockFaces;
+// Faces [block * kLineBlockFaces, (block + 1) * kLineBlockFaces) and the
+// runs in it that need extraction (render/view_independent_lines.h keeps
+// segments by the same blocks). Blocks are fixed, whatever the culling
+// keeps, so segments are chained and merged on screen
+// (render/screen_merge.h) the same way with culling as without: culled
+// clusters hold no lines.
 struct Block {
     std::vector<MaskedRun> runs;
 };
@@ -102,7 +103,7 @@ std::vector<Block> blocks_of(const std::vector<std::pair<uint8_t, std::vector<Fa
             mask = events[i].second > 0 ? uint8_t(mask | events[i].second) : uint8_t(mask & ~(-events[i].second));
         const uint32_t next = i < events.size() ? events[i].first : at;
         for (uint32_t first = at; mask && first < next;) {
-            const uint32_t block = first / kBlockFaces, end = std::min(next, (block + 1) * kBlockFaces);
+            const uint32_t block = first / kLineBlockFaces, end = std::min(next, (block + 1) * kLineBlockFaces);
             if (block != out_block) out.emplace_back(), out_block = block;
             out.back().runs.push_back({first, end - first, mask});
             first = end;
@@ -268,10 +269,7 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
         for (auto& segments : found) segments.clear();
         if (i == blocks.size()) {
             auto& edges = found[int(LineType::Boundary)];
-            for (const glm::uvec2& e : mesh.cpu_boundary_edges()) {
-                const glm::vec3 a = m.positions[e.x], b = m.positions[e.y];
-                edges.push_back({a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)});
-            }
+            append_boundary_segments(m, mesh.cpu_boundary_edges(), edges);
             append_polylines(LineType::Boundary, chain_segments(edges), merge, window, merged, block_segments[i]);
             return;
         }

@@ -140,6 +140,13 @@ bool faces_eye(const Mesh& mesh, const SurfaceFields& fields, const Face& t, glm
     return false;
 }
 
+void append_boundary_segments(const Mesh& mesh, const std::vector<glm::uvec2>& edges, std::vector<LineSegment>& out) {
+    for (const glm::uvec2& e : edges) {
+        const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];
+        out.push_back({a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)});
+    }
+}
+
 ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& q, glm::vec3 eye,
                              const std::vector<CreaseEdge>& creases, const LineExtractionOptions& o) {
     ExtractedLines lines;
@@ -163,11 +170,7 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
             view_ridges_of_face(mesh, t, fields, ridge_vertices, vr, lines[int(LineType::ApparentRidge)],
                                 lines[int(LineType::PrincipalHighlight)]);
     }
-    if (o.boundaries)
-        for (const glm::uvec2& e : boundary_edges(mesh, fields.flags)) {
-            const glm::vec3 a = mesh.positions[e.x], b = mesh.positions[e.y];
-            lines[int(LineType::Boundary)].push_back({a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)});
-        }
+    if (o.boundaries) append_boundary_segments(mesh, boundary_edges(mesh, fields.flags), lines[int(LineType::Boundary)]);
     if (o.creases || o.contours)
         for (const CreaseEdge& c : creases) {
             const glm::vec3 a = c.a, b = c.b, na = c.normal_a, nb = c.normal_b;

@@ -129,5 +129,7 @@ void extract_view_lines_of_face(const Mesh& mesh, const Face& face, const Surfac
 // Edges used by exactly one face, as vertex pairs (a < b), sorted. With flags,
 // only edges between two kFlagBoundary vertices are considered.
 std::vector<glm::uvec2> boundary_edges(const Mesh& mesh, const std::vector<uint8_t>& flags);
+// The segments of those edges (tolerance: half the edge), appended to `out`.
+void append_boundary_segments(const Mesh& mesh, const std::vector<glm::uvec2>& edges, std::vector<LineSegment>& out);
 
 }  // namespace kappa
