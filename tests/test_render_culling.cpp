@@ -82,19 +82,19 @@ TEST_CASE("cluster culling gives the same lines as drawing every triangle", "[re
 TEST_CASE("culling back-facing clusters in the other line passes changes only pixels near contours, the rest of their "
           "culling none",
           "[render][culling]") {
-    const Mesh mesh = load_mesh(test::shared_mesh("bunny.ply"));
-    const SurfaceFields fields = compute_surface_fields(mesh);
-    const float fs = feature_size(mesh, fields);
-    const auto bounds = render::bounding_sphere(mesh);
+    const auto bounds = test::upload_shared_bunny();
     const auto camera = render::Camera::look_at(bounds.center + glm::vec3(-2, 1, -2) * bounds.radius, bounds.center,
                                                 {0, 1, 0}, 30.0f);
+    auto draw = [&](const render::RenderSettings& s) {
+        return render::render_to_image(test::renderer(), camera, s, 320, 240);
+    };
     render::LineSelection lines{false, false, false, false, true, true, true, true, true, true};
     lines.apparent_ridges = lines.principal_highlights = lines.dwkr = true;
     auto s = test::lines_only(lines);
     s.cull_clusters = false;
-    const auto all = test::render(mesh, fields, fs, camera, s, 320, 240);
+    const auto all = draw(s);
     s.cull_clusters = true;
-    const auto culled = test::render(mesh, fields, fs, camera, s, 320, 240);
+    const auto culled = draw(s);
     size_t differ = 0;
     for (int y = 0; y < all.height; ++y)
         for (int x = 0; x < all.width; ++x) differ += test::is_ink(all.at(x, y)) != test::is_ink(culled.at(x, y));
@@ -112,9 +112,9 @@ TEST_CASE("culling back-facing clusters in the other line passes changes only pi
     s.isophote_count = 8;
     s.topo_count = 30;
     s.cull_clusters = false;
-    const auto every = test::render(mesh, fields, fs, camera, s, 320, 240);
+    const auto every = draw(s);
     s.cull_clusters = true;
-    const auto skipped = test::render(mesh, fields, fs, camera, s, 320, 240);
+    const auto skipped = draw(s);
     CHECK(test::count_ink(every) > 2000);
     CHECK(skipped.pixels == every.pixels);
 }
@@ -265,20 +265,19 @@ TEST_CASE("back faces are not culled with the eye inside the bounding sphere or 
 TEST_CASE("white paper on white is drawn once a pixel: the picture of a multisampled surface, for a quarter of the "
           "samples",
           "[render][msaa]") {
-    const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));
-    const SurfaceFields fields = compute_surface_fields(bunny);
-    const float fs = feature_size(bunny, fields);
-    const auto bounds = render::bounding_sphere(bunny);
-    const auto camera = render::Camera::framing(bounds, 30.0f, 4.0f / 3.0f);
+    const auto camera = render::Camera::framing(test::upload_shared_bunny(), 30.0f, 4.0f / 3.0f);
+    auto draw = [&](const render::RenderSettings& s) {
+        return render::render_to_image(test::renderer(), camera, s, 400, 300);
+    };
     render::RenderSettings s = test::lines_only({true, true, false});
     s.msaa = true;
-    const auto white = test::render(bunny, fields, fs, camera, s, 400, 300);
+    const auto white = draw(s);
     s.msaa = false;
-    CHECK(test::largest_difference(test::render(bunny, fields, fs, camera, s, 400, 300), white) == 0);
+    CHECK(test::largest_difference(draw(s), white) == 0);
     // Off-white (blue 254): the surface pass is multisampled as before.
     s.msaa = true;
     s.background = glm::vec4(1.0f, 1.0f, 254.0f / 255.0f, 1.0f);
-    const auto multisampled = test::render(bunny, fields, fs, camera, s, 400, 300);
+    const auto multisampled = draw(s);
     size_t differ = 0, off_white = 0;
     for (int y = 0; y < white.height; ++y)
         for (int x = 0; x < white.width; ++x) {
