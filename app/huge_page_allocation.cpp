@@ -14,6 +14,7 @@
 #include <malloc.h>
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <new>
@@ -31,10 +32,7 @@ struct HeapTuning {
     }
 } heap_tuning;
 
-void* allocate(size_t size) {
-    if (size == 0) size = 1;
-    void* p = std::malloc(size);
-    if (!p) throw std::bad_alloc();
+void advise_huge_pages(void* p, size_t size) {
 #ifdef MADV_HUGEPAGE
     if (size >= kLargeBlock) {
         const uintptr_t begin = (uintptr_t(p) + kHugePage - 1) & ~(kHugePage - 1);
@@ -42,6 +40,22 @@ void* allocate(size_t size) {
         if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
     }
 #endif
+}
+
+void* allocate(size_t size) {
+    if (size == 0) size = 1;
+    void* p = std::malloc(size);
+    if (!p) throw std::bad_alloc();
+    advise_huge_pages(p, size);
+    return p;
+}
+
+// Over-aligned types (a cache line a record) take the same path.
+void* allocate(size_t size, std::align_val_t alignment) {
+    if (size == 0) size = 1;
+    void* p = nullptr;
+    if (posix_memalign(&p, std::max(size_t(alignment), sizeof(void*)), size) != 0) throw std::bad_alloc();
+    advise_huge_pages(p, size);
     return p;
 }
 
@@ -61,3 +75,20 @@ void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, size_t) noexcept { std::free(p); }
 void operator delete[](void* p, size_t) noexcept { std::free(p); }
+
+void* operator new(size_t size, std::align_val_t a) { return allocate(size, a); }
+void* operator new[](size_t size, std::align_val_t a) { return allocate(size, a); }
+void* operator new(size_t size, std::align_val_t a, const std::nothrow_t&) noexcept {
+    try {
+        return allocate(size, a);
+    } catch (...) {
+        return nullptr;
+    }
+}
+void* operator new[](size_t size, std::align_val_t a, const std::nothrow_t& tag) noexcept {
+    return operator new(size, a, tag);
+}
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, size_t, std::align_val_t) noexcept { std::free(p); }

@@ -2,6 +2,7 @@
 
 #include "ldlt.h"
 #include "parallel.h"
+#include "prefetch.h"
 
 #include <glm/geometric.hpp>
 
@@ -10,22 +11,21 @@ namespace kappa {
 namespace {
 
 // Least-squares fit of II in the face frame (sec. 3.2): each edge e_j
-// (opposite corner j) with coordinates (u, v) in (t, b) should satisfy
+// (opposite corner j) with coordinates (u_j, v_j) in (t, b) should satisfy
 // II (u, v)^T = (dn.t, dn.b), dn the normal difference along that edge.
 // The normal equations in (e, f, g) form a 3x3 SPD system.
-bool fit_face_tensor(const glm::dvec3 (&e)[3], const glm::dvec3 (&dn)[3], const glm::dvec3& t, const glm::dvec3& b,
-                     Tensor2& out) {
+bool fit_face_tensor(const double (&u)[3], const double (&v)[3], const glm::dvec3 (&dn)[3], const glm::dvec3& t,
+                     const glm::dvec3& b, Tensor2& out) {
     // Normal equations [[uu, uv, 0], [uv, uu + vv, uv], [0, uv, vv]] (e, f, g)^T = m.
     double uu = 0, uv = 0, vv = 0, m[3] = {};
     for (int j = 0; j < 3; ++j) {
-        const double u = glm::dot(e[j], t), v = glm::dot(e[j], b);
         const double dnu = glm::dot(dn[j], t), dnv = glm::dot(dn[j], b);
-        uu += u * u;
-        uv += u * v;
-        vv += v * v;
-        m[0] += dnu * u;
-        m[1] += dnu * v + dnv * u;
-        m[2] += dnv * v;
+        uu += u[j] * u[j];
+        uv += u[j] * v[j];
+        vv += v[j] * v[j];
+        m[0] += dnu * u[j];
+        m[1] += dnu * v[j] + dnv * u[j];
+        m[2] += dnv * v[j];
     }
     const double diag[3] = {uu, uu + vv, vv}, off[2] = {uv, uv};
     double x[3];
@@ -40,39 +40,44 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
                                         const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
                                         FaceFits& fits) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-    fits.t.assign(nf, glm::vec3(0.0f));
-    fits.b.assign(nf, glm::vec3(0.0f));
-    fits.tensor.assign(nf, Tensor2{});
-    fits.ok.assign(nf, 0);
+    fits.resize(nf);
     parallel_for(nf, [&](size_t i) {
+        FaceFit& fit = fits[i];
+        fit = FaceFit{};
         if (faces.degenerate(i)) return;
+        prefetch_corners_ahead(mesh, i, mesh.positions.data(), normals.data());
         const Face& f = mesh.faces[i];
         const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
         const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
         const glm::dvec3 t = glm::normalize(e[0]);
-        const glm::dvec3 b = glm::cross(glm::normalize(glm::dvec3(faces.area_normals[i])), t);
-        const glm::dvec3 dn[3] = {glm::dvec3(normals[f[2]]) - glm::dvec3(normals[f[1]]),
-                                  glm::dvec3(normals[f[0]]) - glm::dvec3(normals[f[2]]),
-                                  glm::dvec3(normals[f[1]]) - glm::dvec3(normals[f[0]])};
-        if (!fit_face_tensor(e, dn, t, b, fits.tensor[i])) return;
-        fits.t[i] = glm::vec3(t);
-        fits.b[i] = glm::vec3(b);
-        fits.ok[i] = 1;
+        const glm::dvec3 n = glm::normalize(glm::dvec3(faces.area_normals[i]));
+        const glm::dvec3 b = glm::cross(n, t);
+        const double u[3] = {glm::dot(e[0], t), glm::dot(e[1], t), glm::dot(e[2], t)};
+        const double v[3] = {glm::dot(e[0], b), glm::dot(e[1], b), glm::dot(e[2], b)};
+        const glm::vec3 vn[3] = {normals[f[0]], normals[f[1]], normals[f[2]]};
+        const glm::dvec3 dn[3] = {glm::dvec3(vn[2]) - glm::dvec3(vn[1]), glm::dvec3(vn[0]) - glm::dvec3(vn[2]),
+                                  glm::dvec3(vn[1]) - glm::dvec3(vn[0])};
+        Tensor2 tensor;
+        if (!fit_face_tensor(u, v, dn, t, b, tensor)) return;
+        fit = {{tensor.ku, tensor.kuv, tensor.kv, float(u[0]), float(u[1]), float(v[1])}, faces.corner_areas[i], {}};
+        for (int j = 0; j < 3; ++j) {
+            glm::vec3 vu, vv;
+            tangent_frame(vn[j], vu, vv);
+            fit.corners[j] = frame_rotation(glm::vec3(t), glm::vec3(b), glm::vec3(n), vu, vn[j]);
+        }
     });
 
     VertexTensors out;
     out.tensor.resize(nv);
     parallel_for(nv, [&](size_t vi) {
-        const glm::vec3 n = normals[vi];
-        glm::vec3 u, v;
-        tangent_frame(n, u, v);
         float ku = 0, kuv = 0, kv = 0, wsum = 0;
         for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
-            const uint32_t c = vf.corners[k], fi = c / 3;
-            if (!fits.ok[fi]) continue;
-            const float w = faces.corner_areas[fi][c % 3];
-            const glm::vec3 &t = fits.t[fi], &b = fits.b[fi];
-            const Tensor2 r = transform_tensor(frame_change(t, b, glm::cross(t, b), u, v, n), fits.tensor[fi]);
+            const uint32_t c = vf.corners[k];
+            prefetch_face_ahead(vf, k, fits.data());
+            const FaceFit& fit = fits[c / 3];
+            const float w = fit.weights[c % 3];
+            if (!(w > 0)) continue;
+            const Tensor2 r = transform_tensor(fit.corners[c % 3].change(), fit.tensor());
             ku += w * r.ku;
             kuv += w * r.kuv;
             kv += w * r.kv;

@@ -21,17 +21,33 @@
 
 namespace kappa {
 
-// What the curvature step learns about each face; the derivative-of-curvature
-// step reuses it.
-struct FaceFits {
-    // Orthonormal frame (t, b) in each face's plane, t along the edge from
-    // corner 1 to corner 2, t x b the face normal.
-    std::vector<glm::vec3> t, b;
-    // The fitted second fundamental tensor in (t, b).
-    std::vector<Tensor2> tensor;
-    // 1 where the face is usable: not degenerate and its fit succeeded.
-    std::vector<uint8_t> ok;
+// What the curvature step learns about a face, with everything the two
+// vertex steps gather from it in one cache line: they visit a vertex's
+// faces in face order, scattered over memory, so one line a face, not one
+// per array (those loads were most of their time).
+struct alignas(64) FaceFit {
+    // II = (ku, kuv, kv) fitted in the face frame (t, b) (t along the edge
+    // from corner 1 to corner 2, t x b the face normal; the frame itself is
+    // not kept: everything later is relative to it), then the edges in
+    // (t, b): e_0 = (x, 0), e_1 = (y, z), e_2 = -e_0 - e_1 (e_j opposite
+    // corner j). Once the face's C is fitted (dcurvature.h), C = (a, b, c, d)
+    // in (t, b) takes their place.
+    float fit[6] = {};
+    // Mixed-Voronoi corner areas, the averaging weights; all 0 where the face
+    // is not usable (degenerate, or a fit failed).
+    glm::vec3 weights{0.0f};
+    // Each corner's vertex frame (tangent_frame of its normal) rotated into
+    // the face's plane (sec. 3.3), as a rotation from (t, b).
+    FrameRotation corners[3];
+
+    Tensor2 tensor() const { return {fit[0], fit[1], fit[2]}; }
+    glm::vec3 edges() const { return {fit[3], fit[4], fit[5]}; }
+    glm::vec4 dcurv() const { return {fit[0], fit[1], fit[2], fit[3]}; }
+    bool usable() const { return weights != glm::vec3(0.0f); }
 };
+static_assert(sizeof(FaceFit) == 64, "FaceFit: one cache line");
+
+using FaceFits = std::vector<FaceFit>;
 
 // Curvature tensor per vertex, in the vertex's tangent frame
 // tangent_frame(normal) (frames are recomputed from the normals wherever

@@ -15,12 +15,12 @@
 namespace kappa {
 
 // `fits` and `tensors` from compute_curvature_tensors (tensors possibly
-// smoothed), d1 from principal_curvatures of those tensors, `corner_areas`
-// the weights. Returns (a, b, c, d) = (C111, C112, C122, C222) in each
+// smoothed), d1 from principal_curvatures of those tensors; the weights are
+// the fits' corner areas. Returns (a, b, c, d) = (C111, C112, C122, C222) in each
 // vertex's (d1, d2). Takes `fits` and `tensors` over (std::move them in):
 // what the last pass does not need is freed before it allocates its output.
 std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceFits fits,
-                                     const std::vector<glm::vec3>& corner_areas, const std::vector<glm::vec3>& normals,
-                                     VertexTensors tensors, const std::vector<glm::vec3>& d1);
+                                     const std::vector<glm::vec3>& normals, VertexTensors tensors,
+                                     const std::vector<glm::vec3>& d1);
 
 }  // namespace kappa

@@ -69,7 +69,7 @@ void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces
             // needs the face frames of the paper's curvature step.
             FaceFits fits;
             compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
-            out.dcurv = compute_dcurv(mesh, vf, std::move(fits), faces.corner_areas, out.normals, std::move(e.tensors),
+            out.dcurv = compute_dcurv(mesh, vf, std::move(fits), out.normals, std::move(e.tensors),
                                       out.d1);
         } else {
             out.dcurv.resize(out.normals.size());
@@ -157,7 +157,8 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
     {
         StageTimer timer(&t.curvature);
         tensors = compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
-        std::vector<glm::vec3>().swap(faces.area_normals);
+        std::vector<glm::vec3>().swap(faces.area_normals);  // the fits hold what is needed from here on
+        std::vector<glm::vec3>().swap(faces.corner_areas);
     }
     if (smoothing.curvature > 0) {
         report(0.5f, "smoothing curvature");
@@ -172,8 +173,7 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
     report(0.65f, "derivative of curvature");
     {
         StageTimer timer(&t.dcurv);
-        out.dcurv = compute_dcurv(mesh, vf, std::move(fits), faces.corner_areas, out.normals, std::move(tensors), out.d1);
-        std::vector<glm::vec3>().swap(faces.corner_areas);  // the last per-face array: free before d2 is allocated
+        out.dcurv = compute_dcurv(mesh, vf, std::move(fits), out.normals, std::move(tensors), out.d1);
         out.d2 = second_principal_directions(out.normals, out.d1);
     }
     if (smoothing.dcurv > 0) {

@@ -107,6 +107,27 @@ inline FrameChange frame_change(const glm::vec3& t, const glm::vec3& b, const gl
     return {glm::dot(u, t) - at * un, glm::dot(u, b) - ab * un, glm::dot(v, t) - at * vn, glm::dot(v, b) - ab * vn};
 }
 
+// The same change when the two frames' planes coincide after the rotation:
+// a rotation by angle phi, rotated u = c t + s b, rotated v = -s t + c b.
+// Two numbers a (vertex, face) pair, computed once and used by the
+// curvature, the vertex-to-face and the face-to-vertex steps of C.
+struct FrameRotation {
+    float c = 1, s = 0;
+    FrameChange change() const { return {c, s, -s, c}; }
+};
+
+// frame_change's first row, which fixes the rotation (the second row is u x
+// v = nv turned into nf: (-s, c)). Where nv = -nf exactly, rotate_frame's
+// axis is undefined; a half turn about t is taken (u -> (u.t, -u.b)): a
+// proper rotation onto nf, where a half turn about nv would be a reflection.
+inline FrameRotation frame_rotation(const glm::vec3& t, const glm::vec3& b, const glm::vec3& nf, const glm::vec3& u,
+                                    const glm::vec3& nv) {
+    const float ndot = glm::dot(nv, nf);
+    if (ndot <= -1.0f) return {glm::dot(u, t), -glm::dot(u, b)};
+    const float un = glm::dot(u, nf) / (1.0f + ndot);
+    return {glm::dot(u, t) - glm::dot(nv, t) * un, glm::dot(u, b) - glm::dot(nv, b) * un};
+}
+
 // T in the new frame: M T M^T.
 inline Tensor2 transform_tensor(const FrameChange& m, const Tensor2& t) {
     const float x0 = t.ku * m.m00 + t.kuv * m.m01, y0 = t.kuv * m.m00 + t.kv * m.m01;  // T m0
