@@ -34,37 +34,44 @@ bool fit_face_tensor(const double (&u)[3], const double (&v)[3], const glm::dvec
     return true;
 }
 
+// Face i's record; all weights 0 (unusable) when degenerate or the fit fails.
+FaceFit fit_face(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t i) {
+    FaceFit fit{};  // all 0: not usable
+    if (faces.degenerate(i)) return fit;
+    prefetch_corners_ahead(mesh, i, mesh.positions.data(), normals.data());
+    const Face& f = mesh.faces[i];
+    const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
+    const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
+    const glm::dvec3 t = glm::normalize(e[0]);
+    const glm::dvec3 n = glm::normalize(glm::dvec3(faces.area_normals[i]));
+    const glm::dvec3 b = glm::cross(n, t);
+    const double u[3] = {glm::dot(e[0], t), glm::dot(e[1], t), glm::dot(e[2], t)};
+    const double v[3] = {glm::dot(e[0], b), glm::dot(e[1], b), glm::dot(e[2], b)};
+    const glm::vec3 vn[3] = {normals[f[0]], normals[f[1]], normals[f[2]]};
+    const glm::dvec3 dn[3] = {glm::dvec3(vn[2]) - glm::dvec3(vn[1]), glm::dvec3(vn[0]) - glm::dvec3(vn[2]),
+                              glm::dvec3(vn[1]) - glm::dvec3(vn[0])};
+    Tensor2 tensor;
+    if (!fit_face_tensor(u, v, dn, t, b, tensor)) return fit;
+    const float values[6] = {tensor.ku, tensor.kuv, tensor.kv, float(u[0]), float(u[1]), float(v[1])};
+    for (int k = 0; k < 6; ++k) fit.fit[k] = values[k];
+    fit.weights = faces.corner_areas[i];
+    for (int j = 0; j < 3; ++j) {
+        glm::vec3 vu, vv;
+        tangent_frame(vn[j], vu, vv);
+        fit.corners[j] = frame_rotation(glm::vec3(t), glm::vec3(b), glm::vec3(n), vu, vn[j]);
+    }
+    return fit;
+}
+
 }  // namespace
 
 VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
                                         const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
                                         FaceFits& fits) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-    fits.resize(nf);
+    fits = FaceFits(nf);
     parallel_for(nf, [&](size_t i) {
-        FaceFit& fit = fits[i];
-        fit = FaceFit{};
-        if (faces.degenerate(i)) return;
-        prefetch_corners_ahead(mesh, i, mesh.positions.data(), normals.data());
-        const Face& f = mesh.faces[i];
-        const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
-        const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
-        const glm::dvec3 t = glm::normalize(e[0]);
-        const glm::dvec3 n = glm::normalize(glm::dvec3(faces.area_normals[i]));
-        const glm::dvec3 b = glm::cross(n, t);
-        const double u[3] = {glm::dot(e[0], t), glm::dot(e[1], t), glm::dot(e[2], t)};
-        const double v[3] = {glm::dot(e[0], b), glm::dot(e[1], b), glm::dot(e[2], b)};
-        const glm::vec3 vn[3] = {normals[f[0]], normals[f[1]], normals[f[2]]};
-        const glm::dvec3 dn[3] = {glm::dvec3(vn[2]) - glm::dvec3(vn[1]), glm::dvec3(vn[0]) - glm::dvec3(vn[2]),
-                                  glm::dvec3(vn[1]) - glm::dvec3(vn[0])};
-        Tensor2 tensor;
-        if (!fit_face_tensor(u, v, dn, t, b, tensor)) return;
-        fit = {{tensor.ku, tensor.kuv, tensor.kv, float(u[0]), float(u[1]), float(v[1])}, faces.corner_areas[i], {}};
-        for (int j = 0; j < 3; ++j) {
-            glm::vec3 vu, vv;
-            tangent_frame(vn[j], vu, vv);
-            fit.corners[j] = frame_rotation(glm::vec3(t), glm::vec3(b), glm::vec3(n), vu, vn[j]);
-        }
+        fits[i] = fit_face(mesh, normals, faces, i);  // one store of the whole line
     });
 
     VertexTensors out;

@@ -14,6 +14,7 @@
 #include "face_geometry.h"
 #include "mesh.h"
 #include "tensor_frames.h"
+#include "uninitialized_array.h"
 #include "vertex_faces.h"
 
 #include <glm/vec3.hpp>
@@ -32,10 +33,10 @@ struct alignas(64) FaceFit {
     // (t, b): e_0 = (x, 0), e_1 = (y, z), e_2 = -e_0 - e_1 (e_j opposite
     // corner j). Once the face's C is fitted (dcurvature.h), C = (a, b, c, d)
     // in (t, b) takes their place.
-    float fit[6] = {};
+    float fit[6];
     // Mixed-Voronoi corner areas, the averaging weights; all 0 where the face
     // is not usable (degenerate, or a fit failed).
-    glm::vec3 weights{0.0f};
+    glm::vec3 weights;
     // Each corner's vertex frame (tangent_frame of its normal) rotated into
     // the face's plane (sec. 3.3), as a rotation from (t, b).
     FrameRotation corners[3];
@@ -47,7 +48,7 @@ struct alignas(64) FaceFit {
 };
 static_assert(sizeof(FaceFit) == 64, "FaceFit: one cache line");
 
-using FaceFits = std::vector<FaceFit>;
+using FaceFits = UninitializedArray<FaceFit>;  // filled by compute_curvature_tensors
 
 // Curvature tensor per vertex, in the vertex's tangent frame
 // tangent_frame(normal) (frames are recomputed from the normals wherever

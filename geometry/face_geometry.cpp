@@ -1,6 +1,7 @@
 #include "face_geometry.h"
 
 #include "degenerate.h"
+#include "io/prefault.h"
 #include "parallel.h"
 #include "voronoi_areas.h"
 
@@ -13,9 +14,10 @@ namespace kappa {
 FaceGeometry compute_face_geometry(const Mesh& mesh) {
     const size_t nf = mesh.face_count();
     FaceGeometry g;
-    g.area_normals.resize(nf);
-    g.inv_edge_len2.resize(nf);
-    g.corner_areas.resize(nf);
+    for (auto* v : {&g.area_normals, &g.inv_edge_len2, &g.corner_areas}) {
+        io::reserve_prefaulted(*v, nf);  // fresh memory: mapped by all threads at once
+        v->resize(nf);
+    }
     parallel_for(nf, [&](size_t i) {
         const Face& f = mesh.faces[i];
         const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};

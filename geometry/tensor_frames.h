@@ -112,7 +112,7 @@ inline FrameChange frame_change(const glm::vec3& t, const glm::vec3& b, const gl
 // Two numbers a (vertex, face) pair, computed once and used by the
 // curvature, the vertex-to-face and the face-to-vertex steps of C.
 struct FrameRotation {
-    float c = 1, s = 0;
+    float c, s;
     FrameChange change() const { return {c, s, -s, c}; }
 };
 

@@ -1,6 +1,7 @@
 #include "vertex_flags.h"
 
 #include "parallel.h"
+#include "prefetch.h"
 
 #include <algorithm>
 
@@ -72,6 +73,7 @@ std::vector<uint8_t> compute_vertex_flags(const Mesh& mesh, const VertexFaces& v
                 bool self_edge = false;  // a face that uses v twice: count in full
                 for (size_t k = 0; k < d; ++k) {
                     const uint32_t c = vf.corners[vf.begin(v) + k];
+                    prefetch_face_ahead(vf, vf.begin(v) + k, mesh.faces.data());
                     const Face& f = mesh.faces[c / 3];
                     forward[k] = f[(c % 3 + 1) % 3];
                     backward[k] = f[(c % 3 + 2) % 3];

@@ -9,8 +9,9 @@
 namespace kappa::io {
 
 // Asks the kernel to back [data, data + bytes) with pages now, in one call
-// (madvise MADV_POPULATE_WRITE, Linux 5.14+). Contents are unchanged. A hint
-// only: skipped for small ranges, ignored where unsupported.
+// (madvise MADV_POPULATE_WRITE, Linux 5.14+), shared among the worker
+// threads (parallel.h). Contents are unchanged. A hint only: skipped for
+// small ranges, ignored where unsupported.
 void prefault(void* data, size_t bytes);
 
 // reserve(n) followed by prefault() of the reserved storage.
