@@ -1,5 +1,6 @@
 #include "curvature.h"
 
+#include "double_lanes.h"
 #include "ldlt.h"
 #include "parallel.h"
 #include "prefetch.h"
@@ -10,16 +11,37 @@ namespace kappa {
 
 namespace {
 
-// Least-squares fit of II in the face frame (sec. 3.2): each edge e_j
-// (opposite corner j) with coordinates (u_j, v_j) in (t, b) should satisfy
-// II (u, v)^T = (dn.t, dn.b), dn the normal difference along that edge.
-// The normal equations in (e, f, g) form a 3x3 SPD system.
-bool fit_face_tensor(const double (&u)[3], const double (&v)[3], const glm::dvec3 (&dn)[3], const glm::dvec3& t,
-                     const glm::dvec3& b, Tensor2& out) {
-    // Normal equations [[uu, uv, 0], [uv, uu + vv, uv], [0, uv, vv]] (e, f, g)^T = m.
-    double uu = 0, uv = 0, vv = 0, m[3] = {};
+// Faces first .. first + L - 1, L the lanes of D (double_lanes.h: four
+// faces at once, or one), into out[0 .. L). Per face:
+//  - the least-squares fit of II in the face frame (t, b) (sec. 3.2): each
+//    edge e_j (opposite corner j) with coordinates (u_j, v_j) should satisfy
+//    II (u_j, v_j)^T = (dn_j.t, dn_j.b), dn_j the normal difference along it;
+//    normal equations [[uu, uv, 0], [uv, uu + vv, uv], [0, uv, vv]] (e, f, g)^T = m;
+//  - each corner's vertex frame rotated into the face plane (frame_rotation).
+// Degenerate faces stand in a fixed triangle and are stored unusable.
+template <typename D>
+void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t first,
+               FaceFit* out) {
+    using namespace lanes;
+    constexpr int kLanes = sizeof(D) / sizeof(double);
+    bool degenerate[kLanes];
+    for (int j = 0; j < kLanes; ++j) degenerate[j] = faces.degenerate(first + j);
+    const glm::vec3 stand_in[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, up(0, 0, 1);
+    Vec3<D> p[3], vn[3];
+    for (int c = 0; c < 3; ++c) {
+        p[c] = gather3<D>([&](int j) { return degenerate[j] ? stand_in[c] : mesh.positions[mesh.faces[first + j][c]]; });
+        vn[c] = gather3<D>([&](int j) { return degenerate[j] ? up : normals[mesh.faces[first + j][c]]; });
+    }
+    const Vec3<D> e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
+    const Vec3<D> t = normalize(e[0]);
+    const Vec3<D> n = normalize(gather3<D>([&](int j) { return degenerate[j] ? up : faces.area_normals[first + j]; }));
+    const Vec3<D> b = cross(n, t);
+    const Vec3<D> dn[3] = {vn[2] - vn[1], vn[0] - vn[2], vn[1] - vn[0]};
+    D u[3], v[3], uu = 0.0 * t.x, uv = uu, vv = uu, m[3] = {uu, uu, uu};
     for (int j = 0; j < 3; ++j) {
-        const double dnu = glm::dot(dn[j], t), dnv = glm::dot(dn[j], b);
+        u[j] = dot(e[j], t);
+        v[j] = dot(e[j], b);
+        const D dnu = dot(dn[j], t), dnv = dot(dn[j], b);
         uu += u[j] * u[j];
         uv += u[j] * v[j];
         vv += v[j] * v[j];
@@ -27,40 +49,33 @@ bool fit_face_tensor(const double (&u)[3], const double (&v)[3], const glm::dvec
         m[1] += dnu * v[j] + dnv * u[j];
         m[2] += dnv * v[j];
     }
-    const double diag[3] = {uu, uu + vv, vv}, off[2] = {uv, uv};
-    double x[3];
-    if (!ldlt_solve_tridiagonal<3>(diag, off, m, x)) return false;
-    out = {float(x[0]), float(x[1]), float(x[2])};
-    return true;
-}
-
-// Face i's record; all weights 0 (unusable) when degenerate or the fit fails.
-FaceFit fit_face(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t i) {
-    FaceFit fit{};  // all 0: not usable
-    if (faces.degenerate(i)) return fit;
-    prefetch_corners_ahead(mesh, i, mesh.positions.data(), normals.data());
-    const Face& f = mesh.faces[i];
-    const glm::dvec3 p[3] = {mesh.positions[f[0]], mesh.positions[f[1]], mesh.positions[f[2]]};
-    const glm::dvec3 e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
-    const glm::dvec3 t = glm::normalize(e[0]);
-    const glm::dvec3 n = glm::normalize(glm::dvec3(faces.area_normals[i]));
-    const glm::dvec3 b = glm::cross(n, t);
-    const double u[3] = {glm::dot(e[0], t), glm::dot(e[1], t), glm::dot(e[2], t)};
-    const double v[3] = {glm::dot(e[0], b), glm::dot(e[1], b), glm::dot(e[2], b)};
-    const glm::vec3 vn[3] = {normals[f[0]], normals[f[1]], normals[f[2]]};
-    const glm::dvec3 dn[3] = {glm::dvec3(vn[2]) - glm::dvec3(vn[1]), glm::dvec3(vn[0]) - glm::dvec3(vn[2]),
-                              glm::dvec3(vn[1]) - glm::dvec3(vn[0])};
-    Tensor2 tensor;
-    if (!fit_face_tensor(u, v, dn, t, b, tensor)) return fit;
-    const float values[6] = {tensor.ku, tensor.kuv, tensor.kv, float(u[0]), float(u[1]), float(v[1])};
-    for (int k = 0; k < 6; ++k) fit.fit[k] = values[k];
-    fit.weights = faces.corner_areas[i];
-    for (int j = 0; j < 3; ++j) {
-        glm::vec3 vu, vv;
-        tangent_frame(vn[j], vu, vv);
-        fit.corners[j] = frame_rotation(glm::vec3(t), glm::vec3(b), glm::vec3(n), vu, vn[j]);
+    const D diag[3] = {uu, uu + vv, vv}, off[2] = {uv, uv};
+    D x[3];
+    const Mask<D> ok = ldlt_solve_tridiagonal_lanes<3, D>(diag, off, m, x);
+    // Corner k's frame: (u, v) = tangent_frame(vn[k]) (only u is needed),
+    // rotated into the face plane as frame_rotation does.
+    D c[3], s[3];
+    for (int k = 0; k < 3; ++k) {
+        const Vec3<D>& nv = vn[k];
+        const D sign = sign_of(nv.z), a = -1.0 / (sign + nv.z), bxy = nv.x * nv.y * a;
+        const Vec3<D> fu = {1.0 + sign * nv.x * nv.x * a, sign * bxy, -sign * nv.x};
+        const D ndot = dot(nv, n), ut = dot(fu, t), ub = dot(fu, b);
+        const D un = dot(fu, n) / (1.0 + ndot);
+        const Mask<D> opposite = ndot <= -1.0;
+        c[k] = select(opposite, ut, ut - dot(nv, t) * un);
+        s[k] = select(opposite, -ub, ub - dot(nv, b) * un);
     }
-    return fit;
+    for (int j = 0; j < kLanes; ++j) {
+        FaceFit fit{};  // all 0: not usable
+        if (!degenerate[j] && lane(ok, j)) {
+            const double values[6] = {lane(x[0], j), lane(x[1], j), lane(x[2], j),
+                                      lane(u[0], j), lane(u[1], j), lane(v[1], j)};
+            for (int k = 0; k < 6; ++k) fit.fit[k] = float(values[k]);
+            fit.weights = faces.corner_areas[first + j];
+            for (int k = 0; k < 3; ++k) fit.corners[k] = {float(lane(c[k], j)), float(lane(s[k], j))};
+        }
+        out[j] = fit;  // one store of the whole line
+    }
 }
 
 }  // namespace
@@ -70,8 +85,10 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
                                         FaceFits& fits) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     fits = FaceFits(nf);
-    parallel_for(nf, [&](size_t i) {
-        fits[i] = fit_face(mesh, normals, faces, i);  // one store of the whole line
+    parallel_for_ranges(nf, [&](size_t first, size_t last) {
+        size_t i = first;
+        for (; i + lanes::kDoubleLanes <= last; i += lanes::kDoubleLanes) fit_faces<lanes::Doubles>(mesh, normals, faces, i, &fits[i]);
+        for (; i < last; ++i) fit_faces<double>(mesh, normals, faces, i, &fits[i]);
     });
 
     VertexTensors out;

@@ -1,5 +1,6 @@
 #include "dcurvature.h"
 
+#include "double_lanes.h"
 #include "ldlt.h"
 #include "parallel.h"
 #include "prefetch.h"
@@ -10,17 +11,44 @@ namespace kappa {
 
 namespace {
 
-// Normal equations of the fit in dcurvature.h, with the kuv equation counted twice
-// (kuv appears twice in the tensor): a 4x4 SPD system in (a, b, c, d).
-bool fit_face_dcurv(const glm::vec3& edges, const Tensor2 (&fcurv)[3], glm::vec4& out) {
-    // Edge coordinates in (t, b), FaceFits::edges.
-    const double u[3] = {edges.x, edges.y, -double(edges.x) - edges.y}, v[3] = {0, edges.z, -double(edges.z)};
-    double m[4] = {}, uu = 0, uv = 0, vv = 0;
+// C on faces first .. first + L - 1, L the lanes of D (double_lanes.h),
+// replacing their fits (FaceFit::fit); faces whose fit fails get weight 0.
+// The vertices' tensors are turned into the face frame by the inverse
+// (transposed) corner rotation, then C is fitted to their differences along
+// the edges, the kuv equation counted twice (kuv appears twice in the
+// tensor): normal equations, SPD and tridiagonal,
+// [[uu, uv, 0, 0], [uv, 2uu + vv, 2uv, 0], [0, 2uv, uu + 2vv, uv], [0, 0, uv, vv]] (a, b, c, d)^T = m.
+// Faces not usable stand in the first lane's face (any usable one would do).
+template <typename D>
+void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first, FaceFit* fits) {
+    using namespace lanes;
+    constexpr int kLanes = sizeof(D) / sizeof(double);
+    static const FaceFit stand_in = {{0, 0, 0, 1, 0, 1}, glm::vec3(1), {{1, 0}, {1, 0}, {1, 0}}};
+    static const Tensor2 zero{};
+    bool usable[kLanes];
+    for (int j = 0; j < kLanes; ++j) usable[j] = fits[j].usable();
+    auto fit = [&](int j) -> const FaceFit& { return usable[j] ? fits[j] : stand_in; };
+    const Vec3<D> edges = gather3<D>([&](int j) { return fit(j).edges(); });
+    const D u[3] = {edges.x, edges.y, -edges.x - edges.y}, v[3] = {0.0 * edges.x, edges.z, -edges.z};
+    D ku[3], kuv[3], kv[3];  // the corners' tensors in the face frame
+    for (int k = 0; k < 3; ++k) {
+        auto tensor = [&](int j) -> const Tensor2& { return usable[j] ? tensors[mesh.faces[first + j][k]] : zero; };
+        const D tku = gather<D>([&](int j) { return double(tensor(j).ku); });
+        const D tkuv = gather<D>([&](int j) { return double(tensor(j).kuv); });
+        const D tkv = gather<D>([&](int j) { return double(tensor(j).kv); });
+        const D c = gather<D>([&](int j) { return double(fit(j).corners[k].c); });
+        const D s = gather<D>([&](int j) { return double(fit(j).corners[k].s); });
+        // transform_tensor by the transposed rotation, rows (c, -s) and (s, c): M T M^T.
+        const D x0 = tku * c - tkuv * s, y0 = tkuv * c - tkv * s;
+        const D x1 = tku * s + tkuv * c, y1 = tkuv * s + tkv * c;
+        ku[k] = c * x0 - s * y0;
+        kuv[k] = s * x0 + c * y0;
+        kv[k] = s * x1 + c * y1;
+    }
+    D m[4] = {0.0 * u[0], 0.0 * u[0], 0.0 * u[0], 0.0 * u[0]}, uu = m[0], uv = m[0], vv = m[0];
     for (int j = 0; j < 3; ++j) {
         const int prev = (j + 2) % 3, next = (j + 1) % 3;
-        const double dku = double(fcurv[prev].ku) - fcurv[next].ku;
-        const double dkuv = double(fcurv[prev].kuv) - fcurv[next].kuv;
-        const double dkv = double(fcurv[prev].kv) - fcurv[next].kv;
+        const D dku = ku[prev] - ku[next], dkuv = kuv[prev] - kuv[next], dkv = kv[prev] - kv[next];
         uu += u[j] * u[j];
         uv += u[j] * v[j];
         vv += v[j] * v[j];
@@ -29,12 +57,17 @@ bool fit_face_dcurv(const glm::vec3& edges, const Tensor2 (&fcurv)[3], glm::vec4
         m[2] += 2.0 * v[j] * dkuv + u[j] * dkv;
         m[3] += v[j] * dkv;
     }
-    // [[uu, uv, 0, 0], [uv, 2uu + vv, 2uv, 0], [0, 2uv, uu + 2vv, uv], [0, 0, uv, vv]] (a, b, c, d)^T = m
-    const double diag[4] = {uu, 2 * uu + vv, uu + 2 * vv, vv}, off[3] = {uv, 2 * uv, uv};
-    double x[4];
-    if (!ldlt_solve_tridiagonal<4>(diag, off, m, x)) return false;
-    out = glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3]));
-    return true;
+    const D diag[4] = {uu, 2.0 * uu + vv, uu + 2.0 * vv, vv}, off[3] = {uv, 2.0 * uv, uv};
+    D x[4];
+    const Mask<D> ok = ldlt_solve_tridiagonal_lanes<4, D>(diag, off, m, x);
+    for (int j = 0; j < kLanes; ++j) {
+        if (!usable[j]) continue;
+        if (!lane(ok, j)) {
+            fits[j].weights = glm::vec3(0.0f);
+            continue;
+        }
+        for (int k = 0; k < 4; ++k) fits[j].fit[k] = float(lane(x[k], j));
+    }
 }
 
 }  // namespace
@@ -43,21 +76,11 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
                                      const std::vector<glm::vec3>& normals, VertexTensors tensors,
                                      const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-    parallel_for(nf, [&](size_t i) {
-        FaceFit& fit = fits[i];
-        if (!fit.usable()) return;
-        prefetch_corners_ahead(mesh, i, tensors.tensor.data());
-        const Face& f = mesh.faces[i];
-        // Vertex tensors in the face frame: the inverse (transposed) rotation.
-        Tensor2 fcurv[3];
-        for (int j = 0; j < 3; ++j)
-            fcurv[j] = transform_tensor(fit.corners[j].change().transposed(), tensors.tensor[f[j]]);
-        glm::vec4 C;
-        if (fit_face_dcurv(fit.edges(), fcurv, C)) {
-            for (int k = 0; k < 4; ++k) fit.fit[k] = C[k];
-        } else {
-            fit.weights = glm::vec3(0.0f);
-        }
+    parallel_for_ranges(nf, [&](size_t first, size_t last) {
+        size_t i = first;
+        for (; i + lanes::kDoubleLanes <= last; i += lanes::kDoubleLanes)
+            fit_dcurv_faces<lanes::Doubles>(mesh, tensors.tensor, i, &fits[i]);
+        for (; i < last; ++i) fit_dcurv_faces<double>(mesh, tensors.tensor, i, &fits[i]);
     });
     std::vector<Tensor2>().swap(tensors.tensor);
 

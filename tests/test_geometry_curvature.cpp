@@ -6,10 +6,15 @@
 #include "geometry/vertex_flags.h"
 #include "geometry/face_geometry.h"
 #include "geometry/voronoi_areas.h"
+#include "geometry/io/mesh_io.h"
+#include "geometry/parallel.h"
+#include "test_support.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
+
+#include <cstring>
 
 #include <algorithm>
 #include <cmath>
@@ -244,4 +249,24 @@ TEST_CASE("Ellipsoid mean and Gaussian curvature match the analytic values", "[c
     CHECK(finer.second < 0.4 * h[2]);
     CHECK(fine.first < coarse.first / 1.4);  // and they shrink with refinement
     CHECK(finer.first < fine.first / 1.4);
+}
+
+TEST_CASE("curvature fields are the same bits for any thread count", "[curvature][determinism]") {
+    // The face fits run a few faces at a time (double_lanes.h) and the rest
+    // one by one; thread ranges that split the faces at odd places move
+    // faces between the two, which must not change a bit.
+    const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));  // 69,451 faces: odd splits
+    auto fields_with = [&](unsigned threads) {
+        set_thread_count(threads);
+        return compute_surface_fields(bunny, {});
+    };
+    const SurfaceFields one = fields_with(1);
+    for (unsigned threads : {2u, 3u, 5u}) {
+        const SurfaceFields other = fields_with(threads);
+        CHECK(std::memcmp(one.k1.data(), other.k1.data(), one.k1.size() * sizeof(float)) == 0);
+        CHECK(std::memcmp(one.k2.data(), other.k2.data(), one.k2.size() * sizeof(float)) == 0);
+        CHECK(std::memcmp(one.d1.data(), other.d1.data(), one.d1.size() * sizeof(glm::vec3)) == 0);
+        CHECK(std::memcmp(one.dcurv.data(), other.dcurv.data(), one.dcurv.size() * sizeof(glm::vec4)) == 0);
+    }
+    set_thread_count(0);
 }
