@@ -20,7 +20,7 @@ namespace {
 //  - each corner's vertex frame rotated into the face plane (frame_rotation).
 // Degenerate faces stand in a fixed triangle and are stored unusable.
 template <typename D>
-void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t first,
+KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t first,
                FaceFit* out) {
     using namespace lanes;
     constexpr int kLanes = sizeof(D) / sizeof(double);
@@ -57,13 +57,13 @@ void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Fa
     D c[3], s[3];
     for (int k = 0; k < 3; ++k) {
         const Vec3<D>& nv = vn[k];
-        const D sign = sign_of(nv.z), a = -1.0 / (sign + nv.z), bxy = nv.x * nv.y * a;
+        const D sign = sign_of<D>(nv.z), a = -1.0 / (sign + nv.z), bxy = nv.x * nv.y * a;
         const Vec3<D> fu = {1.0 + sign * nv.x * nv.x * a, sign * bxy, -sign * nv.x};
         const D ndot = dot(nv, n), ut = dot(fu, t), ub = dot(fu, b);
         const D un = dot(fu, n) / (1.0 + ndot);
         const Mask<D> opposite = ndot <= -1.0;
-        c[k] = select(opposite, ut, ut - dot(nv, t) * un);
-        s[k] = select(opposite, -ub, ub - dot(nv, b) * un);
+        c[k] = select<D>(opposite, ut, ut - dot(nv, t) * un);
+        s[k] = select<D>(opposite, -ub, ub - dot(nv, b) * un);
     }
     for (int j = 0; j < kLanes; ++j) {
         FaceFit fit{};  // all 0: not usable
@@ -78,6 +78,20 @@ void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const Fa
     }
 }
 
+// Faces [first, last): L at a time, the rest one by one.
+template <typename D>
+KAPPA_LANES_INLINE void fit_face_range(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                       const FaceGeometry& faces, size_t first, size_t last, FaceFit* out) {
+    size_t i = first;
+    for (; i + lanes::kLanes<D> <= last; i += lanes::kLanes<D>) fit_faces<D>(mesh, normals, faces, i, out + i);
+    for (; i < last; ++i) fit_faces<double>(mesh, normals, faces, i, out + i);
+}
+
+KAPPA_TARGET_AVX2 void fit_face_range_avx2(const Mesh& mesh, const std::vector<glm::vec3>& normals,
+                                           const FaceGeometry& faces, size_t first, size_t last, FaceFit* out) {
+    fit_face_range<lanes::Doubles4>(mesh, normals, faces, first, last, out);
+}
+
 }  // namespace
 
 VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
@@ -86,9 +100,10 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     fits = FaceFits(nf);
     parallel_for_ranges(nf, [&](size_t first, size_t last) {
-        size_t i = first;
-        for (; i + lanes::kDoubleLanes <= last; i += lanes::kDoubleLanes) fit_faces<lanes::Doubles>(mesh, normals, faces, i, &fits[i]);
-        for (; i < last; ++i) fit_faces<double>(mesh, normals, faces, i, &fits[i]);
+        if (lanes::has_avx2())
+            fit_face_range_avx2(mesh, normals, faces, first, last, fits.data());
+        else
+            fit_face_range<lanes::Doubles2>(mesh, normals, faces, first, last, fits.data());
     });
 
     VertexTensors out;

@@ -20,7 +20,7 @@ namespace {
 // [[uu, uv, 0, 0], [uv, 2uu + vv, 2uv, 0], [0, 2uv, uu + 2vv, uv], [0, 0, uv, vv]] (a, b, c, d)^T = m.
 // Faces not usable stand in the first lane's face (any usable one would do).
 template <typename D>
-void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first, FaceFit* fits) {
+KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first, FaceFit* fits) {
     using namespace lanes;
     constexpr int kLanes = sizeof(D) / sizeof(double);
     static const FaceFit stand_in = {{0, 0, 0, 1, 0, 1}, glm::vec3(1), {{1, 0}, {1, 0}, {1, 0}}};
@@ -70,6 +70,20 @@ void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size
     }
 }
 
+// Faces [first, last): L at a time, the rest one by one.
+template <typename D>
+KAPPA_LANES_INLINE void fit_dcurv_range(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
+                                        size_t last, FaceFit* fits) {
+    size_t i = first;
+    for (; i + lanes::kLanes<D> <= last; i += lanes::kLanes<D>) fit_dcurv_faces<D>(mesh, tensors, i, fits + i);
+    for (; i < last; ++i) fit_dcurv_faces<double>(mesh, tensors, i, fits + i);
+}
+
+KAPPA_TARGET_AVX2 void fit_dcurv_range_avx2(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
+                                            size_t last, FaceFit* fits) {
+    fit_dcurv_range<lanes::Doubles4>(mesh, tensors, first, last, fits);
+}
+
 }  // namespace
 
 std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceFits fits,
@@ -77,10 +91,10 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
                                      const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     parallel_for_ranges(nf, [&](size_t first, size_t last) {
-        size_t i = first;
-        for (; i + lanes::kDoubleLanes <= last; i += lanes::kDoubleLanes)
-            fit_dcurv_faces<lanes::Doubles>(mesh, tensors.tensor, i, &fits[i]);
-        for (; i < last; ++i) fit_dcurv_faces<double>(mesh, tensors.tensor, i, &fits[i]);
+        if (lanes::has_avx2())
+            fit_dcurv_range_avx2(mesh, tensors.tensor, first, last, fits.data());
+        else
+            fit_dcurv_range<lanes::Doubles2>(mesh, tensors.tensor, first, last, fits.data());
     });
     std::vector<Tensor2>().swap(tensors.tensor);
 

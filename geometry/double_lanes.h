@@ -1,77 +1,121 @@
-// Four doubles at once for the per-face fits of the curvature job (GCC
-// vector extensions: two SSE2 operations each on baseline x86-64, one AVX
-// operation where a caller is compiled for it). Code written once as a
-// template on D = double or D = Doubles runs the same IEEE operations in the
-// same order either way (no FMA contraction: the build does not enable FMA),
-// so a face gets the same bits whether it is computed alone or in a group of
-// four, and so whatever the thread count.
+// Two or four doubles at once for the per-face fits of the curvature job
+// (GCC vector extensions: Doubles2 is one SSE2 register, Doubles4 one AVX
+// register where the caller is compiled for AVX2, else two SSE2 ones). Code
+// written once as a template on D = double, Doubles2 or Doubles4 runs the
+// same IEEE operations in the same order in every lane (no FMA contraction:
+// FMA is never enabled), so a face gets the same bits whether it is
+// computed alone or in a group, on any of these paths, and so whatever the
+// thread count and the processor.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 // Vectors of four doubles are passed in two SSE registers on baseline x86-64;
-// every function here is inline, so no call between objects depends on it.
+// everything here is inlined, so no call between objects depends on it.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 
+// Everything on lanes is inlined into its caller, so that a caller compiled
+// for a wider instruction set (target("avx2")) runs it with that set.
+#define KAPPA_LANES_INLINE [[gnu::always_inline]] inline
+
 namespace kappa::lanes {
 
-using Doubles = double __attribute__((vector_size(16)));
-using DoubleMask = int64_t __attribute__((vector_size(16)));  // comparison results: all bits set or none
-constexpr int kDoubleLanes = sizeof(Doubles) / sizeof(double);
+using Doubles2 = double __attribute__((vector_size(16)));
+using Doubles4 = double __attribute__((vector_size(32)));
+using Mask2 = int64_t __attribute__((vector_size(16)));  // comparison results: all bits set or none
+using Mask4 = int64_t __attribute__((vector_size(32)));
 
-// The mask type of D's comparisons.
+// Lanes of D, and the type of D's comparisons.
+template <typename D> constexpr int kLanes = sizeof(D) / sizeof(double);
 template <typename D> struct MaskOf { using type = bool; };
-template <> struct MaskOf<Doubles> { using type = DoubleMask; };
+template <> struct MaskOf<Doubles2> { using type = Mask2; };
+template <> struct MaskOf<Doubles4> { using type = Mask4; };
 template <typename D> using Mask = typename MaskOf<D>::type;
 
-inline double select(bool m, double a, double b) { return m ? a : b; }
-inline Doubles select(DoubleMask m, Doubles a, Doubles b) { return m ? a : b; }
+template <typename D> KAPPA_LANES_INLINE D select(Mask<D> m, D a, D b) {
+    if constexpr (std::is_same_v<D, double>)
+        return m ? a : b;
+    else
+        return m ? a : b;  // lane-wise (GCC vector conditional)
+}
 
-inline double root(double x) { return std::sqrt(x); }
-template <typename D> D larger(D a, D b) { return select(a < b, b, a); }
-template <typename D> D magnitude(D x) { return select(x < 0.0, -x, x); }
-inline Doubles root(Doubles x) { return __builtin_ia32_sqrtpd(x); }
+template <typename D> KAPPA_LANES_INLINE D root(D x) {
+    if constexpr (std::is_same_v<D, double>) {
+        return std::sqrt(x);
+    } else {
+        D r = x;
+        for (int j = 0; j < kLanes<D>; ++j) r[j] = std::sqrt(x[j]);
+        return r;
+    }
+}
+template <typename D> KAPPA_LANES_INLINE D larger(D a, D b) { return select<D>(a < b, b, a); }
+template <typename D> KAPPA_LANES_INLINE D magnitude(D x) { return select<D>(x < 0.0, -x, x); }
 
 // +1 or -1 with the sign bit of x (std::copysign(1.0, x)).
-inline double sign_of(double x) { return std::copysign(1.0, x); }
-inline Doubles sign_of(Doubles x) {
-    const DoubleMask sign_bit = DoubleMask(x) & int64_t(INT64_MIN);
-    return Doubles(DoubleMask(Doubles{1, 1}) | sign_bit);
+template <typename D> KAPPA_LANES_INLINE D sign_of(D x) {
+    if constexpr (std::is_same_v<D, double>) {
+        return std::copysign(1.0, x);
+    } else {
+        const Mask<D> sign_bit = Mask<D>(x) & int64_t(INT64_MIN);
+        return D(Mask<D>(D{} + 1.0) | sign_bit);
+    }
 }
 
 // Lane j of x (x itself for a double), and whether lane j of a mask is set.
-inline double lane(double x, int) { return x; }
-inline double lane(Doubles x, int j) { return x[j]; }
-inline bool lane(bool m, int) { return m; }
-inline bool lane(DoubleMask m, int j) { return m[j] != 0; }
+KAPPA_LANES_INLINE double lane(double x, int) { return x; }
+KAPPA_LANES_INLINE bool lane(bool m, int) { return m; }
+template <typename D, typename = std::enable_if_t<!std::is_arithmetic_v<D>>>
+KAPPA_LANES_INLINE auto lane(D x, int j) { return x[j]; }
 
-// get(0), ..., get(3) as lanes; get(0) for a double.
-template <typename D, typename Get> D gather(Get get) {
-    if constexpr (sizeof(D) == sizeof(double))
+// get(0), ..., get(L - 1) as lanes.
+template <typename D, typename Get> KAPPA_LANES_INLINE D gather(Get get) {
+    if constexpr (std::is_same_v<D, double>) {
         return get(0);
-    else
-        return Doubles{get(0), get(1)};
+    } else {
+        D r;
+        for (int j = 0; j < kLanes<D>; ++j) r[j] = get(j);
+        return r;
+    }
 }
 
 // A 3-vector of D.
 template <typename D> struct Vec3 {
     D x, y, z;
 };
-template <typename D> Vec3<D> operator-(const Vec3<D>& a, const Vec3<D>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-template <typename D> Vec3<D> operator*(const Vec3<D>& a, D s) { return {a.x * s, a.y * s, a.z * s}; }
-template <typename D> D dot(const Vec3<D>& a, const Vec3<D>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-template <typename D> Vec3<D> cross(const Vec3<D>& a, const Vec3<D>& b) {
+template <typename D> KAPPA_LANES_INLINE Vec3<D> operator-(const Vec3<D>& a, const Vec3<D>& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <typename D> KAPPA_LANES_INLINE Vec3<D> operator*(const Vec3<D>& a, D s) { return {a.x * s, a.y * s, a.z * s}; }
+template <typename D> KAPPA_LANES_INLINE D dot(const Vec3<D>& a, const Vec3<D>& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <typename D> KAPPA_LANES_INLINE Vec3<D> cross(const Vec3<D>& a, const Vec3<D>& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-template <typename D> Vec3<D> normalize(const Vec3<D>& a) { return a * (1.0 / root(dot(a, a))); }
+template <typename D> KAPPA_LANES_INLINE Vec3<D> normalize(const Vec3<D>& a) { return a * (1.0 / root(dot(a, a))); }
 
 // Per lane, the vec3 get(lane) (a glm::vec3 or dvec3) widened to double.
-template <typename D, typename Get> Vec3<D> gather3(Get get) {
+template <typename D, typename Get> KAPPA_LANES_INLINE Vec3<D> gather3(Get get) {
     return {gather<D>([&](int j) { return double(get(j).x); }), gather<D>([&](int j) { return double(get(j).y); }),
             gather<D>([&](int j) { return double(get(j).z); })};
 }
+
+// Whether this processor runs AVX2, for the callers that have a version
+// compiled for it (KAPPA_TARGET_AVX2, with Doubles4) besides the baseline
+// one (Doubles2); both give the same bits.
+#if defined(__x86_64__)
+#define KAPPA_TARGET_AVX2 __attribute__((target("avx2")))
+inline bool has_avx2() {
+    static const bool yes = __builtin_cpu_supports("avx2");
+    return yes;
+}
+#else
+#define KAPPA_TARGET_AVX2
+inline bool has_avx2() { return false; }
+#endif
 
 }  // namespace kappa::lanes
 

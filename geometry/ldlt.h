@@ -23,13 +23,15 @@ namespace kappa {
 // of one another instead of a chain of 2N - 1 (these solves were a seventh
 // of the curvature job); after the scaling every minor lies in
 // (rel_tol^N, 1], far from overflow and underflow.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"  // see double_lanes.h
 template <int N, typename D>
-lanes::Mask<D> ldlt_solve_tridiagonal_lanes(const D (&diag)[N], const D (&off)[N - 1], const D (&rhs)[N], D (&x)[N],
+KAPPA_LANES_INLINE lanes::Mask<D> ldlt_solve_tridiagonal_lanes(const D (&diag)[N], const D (&off)[N - 1], const D (&rhs)[N], D (&x)[N],
                                             double rel_tol = 1e-12) {
     using lanes::larger;
     using lanes::magnitude;
     D scale = diag[0];
-    for (int i = 1; i < N; ++i) scale = larger(scale, diag[i]);  // SPD: the diagonal is positive
+    for (int i = 1; i < N; ++i) scale = larger<D>(scale, diag[i]);  // SPD: the diagonal is positive
     lanes::Mask<D> ok = (scale > 0.0) & (scale < INFINITY);
     const D s = 1.0 / scale;
     D a[N], b[N], r[N];  // A / scale, rhs / scale (b[i] at (i, i+1))
@@ -57,9 +59,10 @@ lanes::Mask<D> ldlt_solve_tridiagonal_lanes(const D (&diag)[N], const D (&off)[N
     }
     x[N - 1] = y[N - 1] * inv_d[N - 1];  // D L^T x = y
     for (int i = N - 2; i >= 0; --i) x[i] = y[i] * inv_d[i] - l[i + 1] * x[i + 1];
-    for (int i = 0; i < N; ++i) ok = ok & (magnitude(x[i]) < INFINITY);
+    for (int i = 0; i < N; ++i) ok = ok & (magnitude<D>(x[i]) < INFINITY);
     return ok;
 }
+#pragma GCC diagnostic pop
 
 // The same for one system: false, leaving x untouched, where it fails.
 template <int N>
