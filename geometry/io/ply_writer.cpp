@@ -7,10 +7,14 @@
 #include "field_columns.h"
 #include "output_file.h"
 
+#include "../parallel.h"
+
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 namespace kappa {
 namespace io {
@@ -62,29 +66,66 @@ void append_number(std::string& out, uint32_t value) {
     out.append(buffer, result.ptr);
 }
 
-void write_vertices(OutputFile& file, const Mesh& mesh, const SurfaceFields& fields, bool binary) {
+// A binary block of `count` fixed-size records: format(i, out) writes
+// record i's `record_bytes` bytes. The worker threads fill a few 1 MiB
+// chunks at a time, which are then written in order (formatting was most of
+// the time of writing a binary PLY, the system call the least).
+template <typename Format>
+void write_records(OutputFile& file, size_t count, size_t record_bytes, const Format& format) {
+    const size_t per_chunk = std::max<size_t>(1, kChunkBytes / record_bytes);
+    const size_t chunks = (count + per_chunk - 1) / per_chunk;
+    std::vector<std::vector<char>> buffers(2 * size_t(thread_count()));
+    for (size_t first = 0; first < chunks; first += buffers.size()) {
+        const size_t batch = std::min(buffers.size(), chunks - first);
+        parallel_for_ranges(
+            batch,
+            [&](size_t begin, size_t end) {
+                for (size_t k = begin; k < end; ++k) {
+                    const size_t from = (first + k) * per_chunk, to = std::min(count, from + per_chunk);
+                    buffers[k].resize((to - from) * record_bytes);
+                    for (size_t i = from; i < to; ++i) format(i, buffers[k].data() + (i - from) * record_bytes);
+                }
+            },
+            1);
+        for (size_t k = 0; k < batch; ++k) file.write(buffers[k].data(), buffers[k].size());
+    }
+}
+
+// The 18 column values as little-endian floats, then the flags byte.
+void write_binary_vertices(OutputFile& file, const Mesh& mesh, const SurfaceFields& fields) {
+    constexpr size_t kRecord = 4 * kFieldColumnCount + 1;
+    write_records(file, mesh.vertex_count(), kRecord, [&](size_t i, char* out) {
+        float row[kFieldColumnCount];
+        field_row(mesh, fields, i, row);
+        if (!kHostLittleEndian)
+            for (float& v : row) v = byte_swapped(v);
+        std::memcpy(out, row, sizeof row);
+        out[sizeof row] = char(field_flags(fields, i));
+    });
+}
+
+// The vertex count 3, then three little-endian int32 indices.
+void write_binary_faces(OutputFile& file, const Mesh& mesh) {
+    write_records(file, mesh.face_count(), 13, [&](size_t i, char* out) {
+        int32_t v[3];
+        for (int k = 0; k < 3; ++k) v[k] = kHostLittleEndian ? int32_t(mesh.faces[i][k]) : byte_swapped(int32_t(mesh.faces[i][k]));
+        out[0] = char(3);
+        std::memcpy(out + 1, v, sizeof v);
+    });
+}
+
+void write_text_vertices(OutputFile& file, const Mesh& mesh, const SurfaceFields& fields) {
     std::string chunk;
     chunk.reserve(kChunkBytes + 1024);
     float row[kFieldColumnCount];
     for (size_t i = 0; i < mesh.vertex_count(); ++i) {
         field_row(mesh, fields, i, row);
-        uint8_t flags = field_flags(fields, i);
-        if (binary) {  // one append per row: 18 little-endian floats and the flags byte
-            char bytes[sizeof row + 1];
-            for (size_t k = 0; k < kFieldColumnCount; ++k) {
-                const float v = kHostLittleEndian ? row[k] : byte_swapped(row[k]);
-                std::memcpy(bytes + 4 * k, &v, 4);
-            }
-            bytes[sizeof row] = char(flags);
-            chunk.append(bytes, sizeof bytes);
-        } else {
-            for (float v : row) {
-                append_number(chunk, v);
-                chunk.push_back(' ');
-            }
-            append_number(chunk, uint32_t(flags));
-            chunk.push_back('\n');
+        for (float v : row) {
+            append_number(chunk, v);
+            chunk.push_back(' ');
         }
+        append_number(chunk, uint32_t(field_flags(fields, i)));
+        chunk.push_back('\n');
         if (chunk.size() >= kChunkBytes) {
             file.write(chunk);
             chunk.clear();
@@ -93,26 +134,16 @@ void write_vertices(OutputFile& file, const Mesh& mesh, const SurfaceFields& fie
     file.write(chunk);
 }
 
-void write_faces(OutputFile& file, const Mesh& mesh, bool binary) {
+void write_text_faces(OutputFile& file, const Mesh& mesh) {
     std::string chunk;
     chunk.reserve(kChunkBytes + 1024);
     for (const Face& f : mesh.faces) {
-        if (binary) {  // one append per face: the count and three little-endian indices
-            char bytes[13];
-            bytes[0] = char(3);
-            for (int k = 0; k < 3; ++k) {
-                const int32_t v = kHostLittleEndian ? int32_t(f[k]) : byte_swapped(int32_t(f[k]));
-                std::memcpy(bytes + 1 + 4 * k, &v, 4);
-            }
-            chunk.append(bytes, sizeof bytes);
-        } else {
-            chunk += "3";
-            for (int k = 0; k < 3; ++k) {
-                chunk.push_back(' ');
-                append_number(chunk, f[k]);
-            }
-            chunk.push_back('\n');
+        chunk += "3";
+        for (int k = 0; k < 3; ++k) {
+            chunk.push_back(' ');
+            append_number(chunk, f[k]);
         }
+        chunk.push_back('\n');
         if (chunk.size() >= kChunkBytes) {
             file.write(chunk);
             chunk.clear();
@@ -131,8 +162,13 @@ void write_ply(const std::string& path, const Mesh& mesh, const SurfaceFields& f
         fail_write(path, "too many vertices for 32-bit PLY indices");
     OutputFile file(path);
     file.write(ply_header(mesh, fields, binary));
-    write_vertices(file, mesh, fields, binary);
-    write_faces(file, mesh, binary);
+    if (binary) {
+        write_binary_vertices(file, mesh, fields);
+        write_binary_faces(file, mesh);
+    } else {
+        write_text_vertices(file, mesh, fields);
+        write_text_faces(file, mesh);
+    }
     file.close();
 }
 
