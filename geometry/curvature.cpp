@@ -78,20 +78,6 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
     }
 }
 
-// Faces [first, last): L at a time, the rest one by one.
-template <typename D>
-KAPPA_LANES_INLINE void fit_face_range(const Mesh& mesh, const std::vector<glm::vec3>& normals,
-                                       const FaceGeometry& faces, size_t first, size_t last, FaceFit* out) {
-    size_t i = first;
-    for (; i + lanes::kLanes<D> <= last; i += lanes::kLanes<D>) fit_faces<D>(mesh, normals, faces, i, out + i);
-    for (; i < last; ++i) fit_faces<double>(mesh, normals, faces, i, out + i);
-}
-
-KAPPA_TARGET_AVX2 void fit_face_range_avx2(const Mesh& mesh, const std::vector<glm::vec3>& normals,
-                                           const FaceGeometry& faces, size_t first, size_t last, FaceFit* out) {
-    fit_face_range<lanes::Doubles4>(mesh, normals, faces, first, last, out);
-}
-
 }  // namespace
 
 VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
@@ -100,10 +86,9 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     fits = FaceFits(nf);
     parallel_for_ranges(nf, [&](size_t first, size_t last) {
-        if (lanes::has_avx2())
-            fit_face_range_avx2(mesh, normals, faces, first, last, fits.data());
-        else
-            fit_face_range<lanes::Doubles2>(mesh, normals, faces, first, last, fits.data());
+        lanes::for_each_group(first, last, [&](auto lanes, size_t i) KAPPA_LANES_LAMBDA {
+            fit_faces<decltype(lanes)>(mesh, normals, faces, i, &fits[i]);
+        });
     });
 
     VertexTensors out;

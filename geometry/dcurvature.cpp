@@ -70,20 +70,6 @@ KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tens
     }
 }
 
-// Faces [first, last): L at a time, the rest one by one.
-template <typename D>
-KAPPA_LANES_INLINE void fit_dcurv_range(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
-                                        size_t last, FaceFit* fits) {
-    size_t i = first;
-    for (; i + lanes::kLanes<D> <= last; i += lanes::kLanes<D>) fit_dcurv_faces<D>(mesh, tensors, i, fits + i);
-    for (; i < last; ++i) fit_dcurv_faces<double>(mesh, tensors, i, fits + i);
-}
-
-KAPPA_TARGET_AVX2 void fit_dcurv_range_avx2(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
-                                            size_t last, FaceFit* fits) {
-    fit_dcurv_range<lanes::Doubles4>(mesh, tensors, first, last, fits);
-}
-
 }  // namespace
 
 std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceFits fits,
@@ -91,10 +77,9 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
                                      const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     parallel_for_ranges(nf, [&](size_t first, size_t last) {
-        if (lanes::has_avx2())
-            fit_dcurv_range_avx2(mesh, tensors.tensor, first, last, fits.data());
-        else
-            fit_dcurv_range<lanes::Doubles2>(mesh, tensors.tensor, first, last, fits.data());
+        lanes::for_each_group(first, last, [&](auto lanes, size_t i) KAPPA_LANES_LAMBDA {
+            fit_dcurv_faces<decltype(lanes)>(mesh, tensors.tensor, i, &fits[i]);
+        });
     });
     std::vector<Tensor2>().swap(tensors.tensor);
 

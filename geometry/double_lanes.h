@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
@@ -103,9 +104,8 @@ template <typename D, typename Get> KAPPA_LANES_INLINE Vec3<D> gather3(Get get) 
             gather<D>([&](int j) { return double(get(j).z); })};
 }
 
-// Whether this processor runs AVX2, for the callers that have a version
-// compiled for it (KAPPA_TARGET_AVX2, with Doubles4) besides the baseline
-// one (Doubles2); both give the same bits.
+// Whether this processor runs AVX2, for the loops that have a version
+// compiled for it (with Doubles4) besides the baseline one (Doubles2).
 #if defined(__x86_64__)
 #define KAPPA_TARGET_AVX2 __attribute__((target("avx2")))
 inline bool has_avx2() {
@@ -116,6 +116,32 @@ inline bool has_avx2() {
 #define KAPPA_TARGET_AVX2
 inline bool has_avx2() { return false; }
 #endif
+
+template <typename D, typename Group>
+KAPPA_LANES_INLINE void for_each_group_with(size_t first, size_t last, const Group& group) {
+    size_t i = first;
+    for (; i + kLanes<D> <= last; i += kLanes<D>) group(D{}, i);
+    for (; i < last; ++i) group(0.0, i);
+}
+
+template <typename Group>
+KAPPA_TARGET_AVX2 void for_each_group_avx2(size_t first, size_t last, const Group& group) {
+    for_each_group_with<Doubles4>(first, last, group);
+}
+
+// Calls group(D{}, i) for i = first, first + L, ... with D the widest lanes
+// this processor runs (Doubles4 with AVX2, else Doubles2) and L = kLanes<D>,
+// then group(0.0, i) (one double) for the last indices one by one: group
+// handles items i .. i + L - 1. Both paths give the same bits. Write group
+// as a lambda marked KAPPA_LANES_LAMBDA so that it is compiled into each path.
+template <typename Group>
+void for_each_group(size_t first, size_t last, const Group& group) {
+    if (has_avx2())
+        for_each_group_avx2(first, last, group);
+    else
+        for_each_group_with<Doubles2>(first, last, group);
+}
+#define KAPPA_LANES_LAMBDA __attribute__((always_inline))
 
 }  // namespace kappa::lanes
 
