@@ -8,6 +8,7 @@
 // thread count and the processor.
 #pragma once
 
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -106,11 +107,17 @@ template <typename D, typename Get> KAPPA_LANES_INLINE Vec3<D> gather3(Get get) 
 
 // Whether this processor runs AVX2, for the loops that have a version
 // compiled for it (with Doubles4) besides the baseline one (Doubles2).
+// allow_avx2(false) makes every loop take the baseline path (for tests).
+inline std::atomic<bool>& avx2_allowed() {
+    static std::atomic<bool> allowed{true};
+    return allowed;
+}
+inline void allow_avx2(bool allowed) { avx2_allowed() = allowed; }
 #if defined(__x86_64__)
 #define KAPPA_TARGET_AVX2 __attribute__((target("avx2")))
 inline bool has_avx2() {
     static const bool yes = __builtin_cpu_supports("avx2");
-    return yes;
+    return yes && avx2_allowed().load(std::memory_order_relaxed);
 }
 #else
 #define KAPPA_TARGET_AVX2

@@ -7,6 +7,7 @@
 #include "geometry/face_geometry.h"
 #include "geometry/voronoi_areas.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/double_lanes.h"
 #include "geometry/parallel.h"
 #include "test_support.h"
 
@@ -269,4 +270,17 @@ TEST_CASE("curvature fields are the same bits for any thread count", "[curvature
         CHECK(std::memcmp(one.dcurv.data(), other.dcurv.data(), one.dcurv.size() * sizeof(glm::vec4)) == 0);
     }
     set_thread_count(0);
+}
+
+TEST_CASE("curvature fields are the same bits with and without AVX2", "[curvature][determinism]") {
+    // The face fits run four faces at a time in a version compiled for AVX2
+    // where the processor has it, two at a time otherwise (double_lanes.h).
+    const Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));
+    lanes::allow_avx2(false);
+    const SurfaceFields baseline = compute_surface_fields(bunny, {});
+    lanes::allow_avx2(true);
+    const SurfaceFields widest = compute_surface_fields(bunny, {});
+    CHECK(std::memcmp(baseline.k1.data(), widest.k1.data(), baseline.k1.size() * sizeof(float)) == 0);
+    CHECK(std::memcmp(baseline.d1.data(), widest.d1.data(), baseline.d1.size() * sizeof(glm::vec3)) == 0);
+    CHECK(std::memcmp(baseline.dcurv.data(), widest.dcurv.data(), baseline.dcurv.size() * sizeof(glm::vec4)) == 0);
 }
