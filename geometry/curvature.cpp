@@ -18,7 +18,7 @@ namespace {
 //    II (u_j, v_j)^T = (dn_j.t, dn_j.b), dn_j the normal difference along it;
 //    normal equations [[uu, uv, 0], [uv, uu + vv, uv], [0, uv, vv]] (e, f, g)^T = m;
 //  - each corner's vertex frame rotated into the face plane (frame_rotation).
-// Degenerate faces stand in a fixed triangle and are stored unusable.
+// Degenerate faces are stored unusable.
 template <typename D>
 KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t first,
                FaceFit* out) {
@@ -26,15 +26,16 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
     constexpr int kLanes = sizeof(D) / sizeof(double);
     bool degenerate[kLanes];
     for (int j = 0; j < kLanes; ++j) degenerate[j] = faces.degenerate(first + j);
-    const glm::vec3 stand_in[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, up(0, 0, 1);
+    // Degenerate faces are computed too (their lanes are not stored): their
+    // indices are valid, and whatever their numbers give is dropped.
     Vec3<D> p[3], vn[3];
     for (int c = 0; c < 3; ++c) {
-        p[c] = gather3<D>([&](int j) { return degenerate[j] ? stand_in[c] : mesh.positions[mesh.faces[first + j][c]]; });
-        vn[c] = gather3<D>([&](int j) { return degenerate[j] ? up : normals[mesh.faces[first + j][c]]; });
+        p[c] = gather3<D>([&](int j) { return mesh.positions[mesh.faces[first + j][c]]; });
+        vn[c] = gather3<D>([&](int j) { return normals[mesh.faces[first + j][c]]; });
     }
     const Vec3<D> e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
     const Vec3<D> t = normalize(e[0]);
-    const Vec3<D> n = normalize(gather3<D>([&](int j) { return degenerate[j] ? up : faces.area_normals[first + j]; }));
+    const Vec3<D> n = normalize(gather3<D>([&](int j) { return faces.area_normals[first + j]; }));
     const Vec3<D> b = cross(n, t);
     const Vec3<D> dn[3] = {vn[2] - vn[1], vn[0] - vn[2], vn[1] - vn[0]};
     D u[3], v[3], uu = 0.0 * t.x, uv = uu, vv = uu, m[3] = {uu, uu, uu};

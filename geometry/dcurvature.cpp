@@ -18,29 +18,26 @@ namespace {
 // the edges, the kuv equation counted twice (kuv appears twice in the
 // tensor): normal equations, SPD and tridiagonal,
 // [[uu, uv, 0, 0], [uv, 2uu + vv, 2uv, 0], [0, 2uv, uu + 2vv, uv], [0, 0, uv, vv]] (a, b, c, d)^T = m.
-// Faces not usable stand in the first lane's face (any usable one would do).
+// Faces not usable are computed too (their lanes are not stored): their
+// records are all zero and their indices valid.
 template <typename D>
-KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first, FaceFit* fits) {
+KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
+                                        FaceFit* fits) {
     using namespace lanes;
     constexpr int kLanes = sizeof(D) / sizeof(double);
-    static const FaceFit stand_in = {{0, 0, 0, 1, 0, 1}, glm::vec3(1), {{1, 0}, {1, 0}, {1, 0}}};
-    static const Tensor2 zero{};
-    bool usable[kLanes];
-    for (int j = 0; j < kLanes; ++j) usable[j] = fits[j].usable();
-    auto fit = [&](int j) -> const FaceFit& { return usable[j] ? fits[j] : stand_in; };
-    const Vec3<D> edges = gather3<D>([&](int j) { return fit(j).edges(); });
+    const Vec3<D> edges = gather3<D>([&](int j) { return fits[j].edges(); });
     const D u[3] = {edges.x, edges.y, -edges.x - edges.y}, v[3] = {0.0 * edges.x, edges.z, -edges.z};
     D ku[3], kuv[3], kv[3];  // the corners' tensors in the face frame
     for (int k = 0; k < 3; ++k) {
-        auto tensor = [&](int j) -> const Tensor2& { return usable[j] ? tensors[mesh.faces[first + j][k]] : zero; };
-        const D tku = gather<D>([&](int j) { return double(tensor(j).ku); });
-        const D tkuv = gather<D>([&](int j) { return double(tensor(j).kuv); });
-        const D tkv = gather<D>([&](int j) { return double(tensor(j).kv); });
-        const D c = gather<D>([&](int j) { return double(fit(j).corners[k].c); });
-        const D s = gather<D>([&](int j) { return double(fit(j).corners[k].s); });
+        const Vec3<D> t = gather3<D>([&](int j) {
+            const Tensor2& tensor = tensors[mesh.faces[first + j][k]];
+            return glm::vec3(tensor.ku, tensor.kuv, tensor.kv);
+        });
+        const D c = gather<D>([&](int j) { return double(fits[j].corners[k].c); });
+        const D s = gather<D>([&](int j) { return double(fits[j].corners[k].s); });
         // transform_tensor by the transposed rotation, rows (c, -s) and (s, c): M T M^T.
-        const D x0 = tku * c - tkuv * s, y0 = tkuv * c - tkv * s;
-        const D x1 = tku * s + tkuv * c, y1 = tkuv * s + tkv * c;
+        const D x0 = t.x * c - t.y * s, y0 = t.y * c - t.z * s;
+        const D x1 = t.x * s + t.y * c, y1 = t.y * s + t.z * c;
         ku[k] = c * x0 - s * y0;
         kuv[k] = s * x0 + c * y0;
         kv[k] = s * x1 + c * y1;
@@ -61,7 +58,7 @@ KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tens
     D x[4];
     const Mask<D> ok = ldlt_solve_tridiagonal_lanes<4, D>(diag, off, m, x);
     for (int j = 0; j < kLanes; ++j) {
-        if (!usable[j]) continue;
+        if (!fits[j].usable()) continue;
         if (!lane(ok, j)) {
             fits[j].weights = glm::vec3(0.0f);
             continue;

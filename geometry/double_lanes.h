@@ -18,6 +18,8 @@
 // everything here is inlined, so no call between objects depends on it.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
+// Lanes filled one by one (gather, gather3) look partly uninitialised to GCC.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
 // Everything on lanes is inlined into its caller, so that a caller compiled
 // for a wider instruction set (target("avx2")) runs it with that set.
@@ -77,7 +79,7 @@ template <typename D, typename Get> KAPPA_LANES_INLINE D gather(Get get) {
     if constexpr (std::is_same_v<D, double>) {
         return get(0);
     } else {
-        D r;
+        D r{};
         for (int j = 0; j < kLanes<D>; ++j) r[j] = get(j);
         return r;
     }
@@ -101,8 +103,19 @@ template <typename D> KAPPA_LANES_INLINE Vec3<D> normalize(const Vec3<D>& a) { r
 
 // Per lane, the vec3 get(lane) (a glm::vec3 or dvec3) widened to double.
 template <typename D, typename Get> KAPPA_LANES_INLINE Vec3<D> gather3(Get get) {
-    return {gather<D>([&](int j) { return double(get(j).x); }), gather<D>([&](int j) { return double(get(j).y); }),
-            gather<D>([&](int j) { return double(get(j).z); })};
+    if constexpr (std::is_same_v<D, double>) {
+        const auto v = get(0);
+        return {double(v.x), double(v.y), double(v.z)};
+    } else {
+        Vec3<D> r{};
+        for (int j = 0; j < kLanes<D>; ++j) {
+            const auto v = get(j);  // one load of the vector per lane
+            r.x[j] = v.x;
+            r.y[j] = v.y;
+            r.z[j] = v.z;
+        }
+        return r;
+    }
 }
 
 // Whether this processor runs AVX2, for the loops that have a version
