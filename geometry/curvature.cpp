@@ -69,8 +69,8 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
     for (int j = 0; j < kLanes; ++j) {
         FaceFit fit{};  // all 0: not usable
         if (!degenerate[j] && lane(ok, j)) {
-            const double values[6] = {lane(x[0], j), lane(x[1], j), lane(x[2], j),
-                                      lane(u[0], j), lane(u[1], j), lane(v[1], j)};
+            const glm::vec3 h = tensor_harmonics({float(lane(x[0], j)), float(lane(x[1], j)), float(lane(x[2], j))});
+            const double values[6] = {h[0], h[1], h[2], lane(u[0], j), lane(u[1], j), lane(v[1], j)};
             for (int k = 0; k < 6; ++k) fit.fit[k] = float(values[k]);
             fit.weights = faces.corner_areas[first + j];
             for (int k = 0; k < 3; ++k) fit.corners[k] = {float(lane(c[k], j)), float(lane(s[k], j))};
@@ -95,20 +95,20 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
     VertexTensors out;
     out.tensor.resize(nv);
     parallel_for(nv, [&](size_t vi) {
-        float ku = 0, kuv = 0, kv = 0, wsum = 0;
+        // Summed as harmonics (tensor_frames.h) in the vertex frame.
+        glm::vec3 sum(0.0f);
+        float wsum = 0;
         for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
             const uint32_t c = vf.corners[k];
             prefetch_face_ahead(vf, k, fits.data());
             const FaceFit& fit = fits[c / 3];
             const float w = fit.weights[c % 3];
             if (!(w > 0)) continue;
-            const Tensor2 r = transform_tensor(fit.corners[c % 3].change(), fit.tensor());
-            ku += w * r.ku;
-            kuv += w * r.kuv;
-            kv += w * r.kv;
+            const FrameRotation& r = fit.corners[c % 3];
+            sum += w * turn_tensor_harmonics(fit.tensor_harmonics(), r.c, r.s);
             wsum += w;
         }
-        if (wsum > 0) out.tensor[vi] = {ku / wsum, kuv / wsum, kv / wsum};
+        if (wsum > 0) out.tensor[vi] = tensor_from_harmonics(sum / wsum);
     });
     return out;
 }

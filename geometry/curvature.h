@@ -27,12 +27,12 @@ namespace kappa {
 // faces in face order, scattered over memory, so one line a face, not one
 // per array (those loads were most of their time).
 struct alignas(64) FaceFit {
-    // II = (ku, kuv, kv) fitted in the face frame (t, b) (t along the edge
-    // from corner 1 to corner 2, t x b the face normal; the frame itself is
-    // not kept: everything later is relative to it), then the edges in
-    // (t, b): e_0 = (x, 0), e_1 = (y, z), e_2 = -e_0 - e_1 (e_j opposite
-    // corner j). Once the face's C is fitted (dcurvature.h), C = (a, b, c, d)
-    // in (t, b) takes their place.
+    // II fitted in the face frame (t, b) (t along the edge from corner 1 to
+    // corner 2, t x b the face normal; the frame itself is not kept:
+    // everything later is relative to it), as its harmonics (h0, a2, b2)
+    // (tensor_frames.h), then the edges in (t, b): e_0 = (x, 0), e_1 =
+    // (y, z), e_2 = -e_0 - e_1 (e_j opposite corner j). Once the face's C is
+    // fitted (dcurvature.h), C's harmonics (a1, b1, a3, b3) take their place.
     float fit[6];
     // Mixed-Voronoi corner areas, the averaging weights; all 0 where the face
     // is not usable (degenerate, or a fit failed).
@@ -41,9 +41,9 @@ struct alignas(64) FaceFit {
     // the face's plane (sec. 3.3), as a rotation from (t, b).
     FrameRotation corners[3];
 
-    Tensor2 tensor() const { return {fit[0], fit[1], fit[2]}; }
+    glm::vec3 tensor_harmonics() const { return {fit[0], fit[1], fit[2]}; }
     glm::vec3 edges() const { return {fit[3], fit[4], fit[5]}; }
-    glm::vec4 dcurv() const { return {fit[0], fit[1], fit[2], fit[3]}; }
+    glm::vec4 dcurv_harmonics() const { return {fit[0], fit[1], fit[2], fit[3]}; }
     bool usable() const { return weights != glm::vec3(0.0f); }
 };
 static_assert(sizeof(FaceFit) == 64, "FaceFit: one cache line");

@@ -63,7 +63,8 @@ KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tens
             fits[j].weights = glm::vec3(0.0f);
             continue;
         }
-        for (int k = 0; k < 4; ++k) fits[j].fit[k] = float(lane(x[k], j));
+        const glm::vec4 h = dcurv_harmonics(glm::vec4(lane(x[0], j), lane(x[1], j), lane(x[2], j), lane(x[3], j)));
+        for (int k = 0; k < 4; ++k) fits[j].fit[k] = h[k];
     }
 }
 
@@ -82,7 +83,8 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
 
     std::vector<glm::vec4> dcurv(nv, glm::vec4(0.0f));
     parallel_for(nv, [&](size_t vi) {
-        // Average in the vertex frame (u, v), then turn the (linear) result into the principal frame.
+        // Average in the vertex frame (u, v), as harmonics (tensor_frames.h),
+        // then turn the (linear) result into the principal frame.
         glm::vec4 sum(0.0f);
         float wsum = 0;
         for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
@@ -91,15 +93,16 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
             const FaceFit& fit = fits[c / 3];
             const float w = fit.weights[c % 3];
             if (!(w > 0)) continue;
-            sum += w * transform_dcurv(fit.corners[c % 3].change(), fit.dcurv());
+            const FrameRotation& r = fit.corners[c % 3];
+            sum += w * turn_dcurv_harmonics(fit.dcurv_harmonics(), r.c, r.s);
             wsum += w;
         }
         if (!(wsum > 0)) return;
-        // (d1, d2) = (c u - s v, s u + c v) in (u, v).
+        // d1 = c u + s v: the principal frame is (u, v) turned by atan2(s, c).
         glm::vec3 u, v;
         tangent_frame(normals[vi], u, v);
-        const float c = glm::dot(d1[vi], u), s = -glm::dot(d1[vi], v);
-        dcurv[vi] = transform_dcurv(FrameChange{c, -s, s, c}, sum / wsum);
+        const float c = glm::dot(d1[vi], u), s = glm::dot(d1[vi], v);
+        dcurv[vi] = dcurv_from_harmonics(turn_dcurv_harmonics(sum / wsum, c, s));
     });
     return dcurv;
 }

@@ -151,6 +151,38 @@ inline glm::vec4 transform_dcurv(const FrameChange& m, const glm::vec4& C) {
             m.m10 * c0 + m.m11 * c1};
 }
 
+// A tensor by its harmonics: on the unit circle x = (cos t, sin t),
+//   T(x, x) = h0 + a2 cos 2t + b2 sin 2t,  (h0, a2, b2) = ((ku + kv) / 2, (ku - kv) / 2, kuv).
+// A frame turned by phi turns (a2, b2) by -2 phi (h0, the mean curvature,
+// does not change): cheaper than transform_tensor, and linear.
+inline glm::vec3 tensor_harmonics(const Tensor2& t) { return {0.5f * (t.ku + t.kv), 0.5f * (t.ku - t.kv), t.kuv}; }
+inline Tensor2 tensor_from_harmonics(const glm::vec3& h) { return {h[0] + h[1], h[2], h[0] - h[1]}; }
+// The harmonics in the frame turned by phi, (c, s) = (cos phi, sin phi), c^2 + s^2 = 1.
+inline glm::vec3 turn_tensor_harmonics(const glm::vec3& h, float c, float s) {
+    const float c2 = c * c - s * s, s2 = 2.0f * c * s;  // cos 2phi, sin 2phi
+    return {h[0], h[1] * c2 + h[2] * s2, h[2] * c2 - h[1] * s2};
+}
+
+// C by its harmonics: on the unit circle x = (cos t, sin t),
+//   C(x, x, x) = a1 cos t + b1 sin t + a3 cos 3t + b3 sin 3t,
+// with (a1, b1, a3, b3) = (3 (a + c) / 4, 3 (b + d) / 4, (a - 3c) / 4, (3b - d) / 4)
+// for C = (a, b, c, d). A frame turned by phi turns (a1, b1) by -phi and
+// (a3, b3) by -3 phi: four rotations' worth of arithmetic where
+// transform_dcurv takes three times as much, and linear, so sums of C in
+// one frame can be turned once.
+inline glm::vec4 dcurv_harmonics(const glm::vec4& C) {
+    return {0.75f * (C[0] + C[2]), 0.75f * (C[1] + C[3]), 0.25f * (C[0] - 3.0f * C[2]), 0.25f * (3.0f * C[1] - C[3])};
+}
+inline glm::vec4 dcurv_from_harmonics(const glm::vec4& h) {
+    return {h[0] + h[2], h[1] / 3.0f + h[3], h[0] / 3.0f - h[2], h[1] - h[3]};
+}
+// The harmonics of C in the frame turned by phi, (c, s) = (cos phi, sin phi)
+// (FrameRotation's new x axis), c^2 + s^2 = 1.
+inline glm::vec4 turn_dcurv_harmonics(const glm::vec4& h, float c, float s) {
+    const float c3 = c * (4.0f * c * c - 3.0f), s3 = s * (3.0f - 4.0f * s * s);  // cos 3phi, sin 3phi
+    return {h[0] * c + h[1] * s, h[1] * c - h[0] * s, h[2] * c3 + h[3] * s3, h[3] * c3 - h[2] * s3};
+}
+
 // Eigen-decomposition of tensor t in frame (u, v) with normal n = u x v by
 // one Jacobi rotation: k1 >= k2 (signed), d1 x d2 = n.
 inline void diagonalize_tensor(const glm::vec3& u, const glm::vec3& v, const glm::vec3& n, const Tensor2& t,

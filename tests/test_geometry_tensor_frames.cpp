@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <cmath>
 #include <random>
 
 using namespace kappa;
@@ -72,4 +73,34 @@ TEST_CASE("frame_rotation of exactly opposite normals is a half turn about t, a 
     CHECK(glm::length(turned_v - (-r.s * t + r.c * b)) < 1e-6f);
     // The turned frame's normal is nf: a rotation, not a reflection.
     CHECK(glm::dot(glm::cross(turned_u, turned_v), nf) == Approx(1.0f));
+}
+
+TEST_CASE("C turned through its harmonics is C turned by transform_dcurv", "[curvature]") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> coefficient(-3, 3), angle(-3.2f, 3.2f);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const glm::vec4 C(coefficient(rng), coefficient(rng), coefficient(rng), coefficient(rng));
+        const glm::vec4 back = dcurv_from_harmonics(dcurv_harmonics(C));
+        for (int k = 0; k < 4; ++k) REQUIRE(back[k] == Approx(C[k]).margin(2e-6));
+        const float phi = angle(rng);
+        const FrameRotation r{std::cos(phi), std::sin(phi)};
+        const glm::vec4 turned = dcurv_from_harmonics(turn_dcurv_harmonics(dcurv_harmonics(C), r.c, r.s));
+        const glm::vec4 ref = transform_dcurv(r.change(), C);
+        for (int k = 0; k < 4; ++k) REQUIRE(turned[k] == Approx(ref[k]).margin(1e-5));
+    }
+}
+
+TEST_CASE("a tensor turned through its harmonics is the tensor turned by transform_tensor", "[curvature]") {
+    std::mt19937 rng(6);
+    std::uniform_real_distribution<float> coefficient(-3, 3), angle(-3.2f, 3.2f);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Tensor2 T{coefficient(rng), coefficient(rng), coefficient(rng)};
+        const float phi = angle(rng);
+        const FrameRotation r{std::cos(phi), std::sin(phi)};
+        const Tensor2 turned = tensor_from_harmonics(turn_tensor_harmonics(tensor_harmonics(T), r.c, r.s));
+        const Tensor2 ref = transform_tensor(r.change(), T);
+        REQUIRE(turned.ku == Approx(ref.ku).margin(1e-5));
+        REQUIRE(turned.kuv == Approx(ref.kuv).margin(1e-5));
+        REQUIRE(turned.kv == Approx(ref.kv).margin(1e-5));
+    }
 }
