@@ -1,0 +1,29 @@
+// glibc's heap tuned for kappa's few, large, short-lived arrays (Linux,
+// glibc).
+//
+// Why: on the machines we measured (VMs) every fresh page of memory costs a
+// fault and a zeroing, 0.5 to 3 ms per MB: for a 1M-face mesh that was
+// more than the curvature computation itself. So blocks up to 32 MiB come
+// from the heap, never from a fresh mmap, and freed memory is kept: the
+// temporaries of one stage reuse the pages of the previous one instead of
+// faulting in new ones.
+//
+// Huge pages (madvise MADV_HUGEPAGE on large blocks) were used until
+// 2026-11-25 and dropped: measured alternately with another program that
+// had just freed its memory (trimesh2, as the README's comparison runs), a
+// huge page fault cost so much more that `kappa curvature bunny-1M.ply` took
+// 0.48 s instead of 0.37 s on one thread (same on two), and `kappa render`
+// 8% longer.
+#include <malloc.h>
+
+namespace {
+
+struct HeapTuning {
+    HeapTuning() {
+        mallopt(M_MMAP_THRESHOLD, 32 << 20);  // the largest value glibc accepts
+        mallopt(M_TRIM_THRESHOLD, 1 << 30);   // keep freed memory for reuse
+        mallopt(M_TOP_PAD, 16 << 20);         // grow the heap in big steps
+    }
+} heap_tuning;
+
+}  // namespace
