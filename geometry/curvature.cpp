@@ -1,6 +1,7 @@
 #include "curvature.h"
 
 #include "double_lanes.h"
+#include "io/prefault.h"
 #include "ldlt.h"
 #include "parallel.h"
 #include "prefetch.h"
@@ -86,6 +87,7 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
                                         FaceFits& fits) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     fits = FaceFits(nf);
+    io::prefault(fits.data(), nf * sizeof(FaceFit));  // fresh memory: mapped by all threads at once
     parallel_for_ranges(nf, [&](size_t first, size_t last) {
         lanes::for_each_group(first, last, [&](auto lanes, size_t i) KAPPA_LANES_LAMBDA {
             fit_faces<decltype(lanes)>(mesh, normals, faces, i, &fits[i]);
