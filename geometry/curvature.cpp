@@ -4,7 +4,6 @@
 #include "io/prefault.h"
 #include "ldlt.h"
 #include "parallel.h"
-#include "prefetch.h"
 
 #include <glm/geometric.hpp>
 
@@ -99,17 +98,9 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
     parallel_for(nv, [&](size_t vi) {
         // Summed as harmonics (tensor_frames.h) in the vertex frame.
         glm::vec3 sum(0.0f);
-        float wsum = 0;
-        for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
-            const uint32_t c = vf.corners[k];
-            prefetch_face_ahead(vf, k, fits.data());
-            const FaceFit& fit = fits[c / 3];
-            const float w = fit.weights[c % 3];
-            if (!(w > 0)) continue;
-            const FrameRotation& r = fit.corners[c % 3];
-            sum += w * turn_tensor_harmonics(fit.tensor_harmonics(), r.c, r.s);
-            wsum += w;
-        }
+        const float wsum = add_face_values(vf, fits, vi, sum, [](const FaceFit& fit, const FrameRotation& r) {
+            return turn_tensor_harmonics(fit.tensor_harmonics(), r.c, r.s);
+        });
         if (wsum > 0) out.tensor[vi] = tensor_from_harmonics(sum / wsum);
     });
     return out;

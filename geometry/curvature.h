@@ -13,6 +13,7 @@
 
 #include "face_geometry.h"
 #include "mesh.h"
+#include "prefetch.h"
 #include "tensor_frames.h"
 #include "uninitialized_array.h"
 #include "vertex_faces.h"
@@ -49,6 +50,24 @@ struct alignas(64) FaceFit {
 static_assert(sizeof(FaceFit) == 64, "FaceFit: one cache line");
 
 using FaceFits = UninitializedArray<FaceFit>;  // filled by compute_curvature_tensors
+
+// Adds w * turned(fit, rotation) to `sum` over vertex v's usable faces, w the
+// corner's weight and rotation its frame rotation, in face order; returns
+// the sum of the weights. The gather of both vertex steps.
+template <typename T, typename Turned>
+float add_face_values(const VertexFaces& vf, const FaceFits& fits, size_t v, T& sum, const Turned& turned) {
+    float wsum = 0;
+    for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) {
+        const uint32_t c = vf.corners[k];
+        prefetch_face_ahead(vf, k, fits.data());
+        const FaceFit& fit = fits[c / 3];
+        const float w = fit.weights[c % 3];
+        if (!(w > 0)) continue;
+        sum += w * turned(fit, fit.corners[c % 3]);
+        wsum += w;
+    }
+    return wsum;
+}
 
 // Curvature tensor per vertex, in the vertex's tangent frame
 // tangent_frame(normal) (frames are recomputed from the normals wherever

@@ -3,7 +3,6 @@
 #include "double_lanes.h"
 #include "ldlt.h"
 #include "parallel.h"
-#include "prefetch.h"
 
 #include <glm/geometric.hpp>
 
@@ -86,17 +85,9 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
         // Average in the vertex frame (u, v), as harmonics (tensor_frames.h),
         // then turn the (linear) result into the principal frame.
         glm::vec4 sum(0.0f);
-        float wsum = 0;
-        for (uint32_t k = vf.begin(vi); k < vf.end(vi); ++k) {
-            const uint32_t c = vf.corners[k];
-            prefetch_face_ahead(vf, k, fits.data());
-            const FaceFit& fit = fits[c / 3];
-            const float w = fit.weights[c % 3];
-            if (!(w > 0)) continue;
-            const FrameRotation& r = fit.corners[c % 3];
-            sum += w * turn_dcurv_harmonics(fit.dcurv_harmonics(), r.c, r.s);
-            wsum += w;
-        }
+        const float wsum = add_face_values(vf, fits, vi, sum, [](const FaceFit& fit, const FrameRotation& r) {
+            return turn_dcurv_harmonics(fit.dcurv_harmonics(), r.c, r.s);
+        });
         if (!(wsum > 0)) return;
         // d1 = c u + s v: the principal frame is (u, v) turned by atan2(s, c).
         glm::vec3 u, v;
