@@ -8,6 +8,8 @@
 // thread count and the processor.
 #pragma once
 
+#include "lanes.h"
+
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -20,10 +22,6 @@
 #pragma GCC diagnostic ignored "-Wpsabi"
 // Lanes filled one by one (gather, gather3) look partly uninitialised to GCC.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
-// Everything on lanes is inlined into its caller, so that a caller compiled
-// for a wider instruction set (target("avx2")) runs it with that set.
-#define KAPPA_LANES_INLINE [[gnu::always_inline]] inline
 
 namespace kappa::lanes {
 
@@ -55,8 +53,6 @@ template <typename D> KAPPA_LANES_INLINE D root(D x) {
         return r;
     }
 }
-template <typename D> KAPPA_LANES_INLINE D larger(D a, D b) { return select<D>(a < b, b, a); }
-template <typename D> KAPPA_LANES_INLINE D magnitude(D x) { return select<D>(x < 0.0, -x, x); }
 
 // +1 or -1 with the sign bit of x (std::copysign(1.0, x)).
 template <typename D> KAPPA_LANES_INLINE D sign_of(D x) {

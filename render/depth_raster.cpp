@@ -1,6 +1,6 @@
 #include "render/depth_raster.h"
 
-#include "geometry/lines/lanes.h"
+#include "geometry/lanes.h"
 #include "geometry/parallel.h"
 #include "render/surface_renderer.h"
 
@@ -97,7 +97,7 @@ void fill(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, f
         if (!(lo <= hi)) continue;
         float* row = t.depth + size_t(y) * size_t(t.width);
         int x = int(lo);
-        // Four pixels at a time (geometry/lines/lanes.h: the same operations, the same bits).
+        // Four pixels at a time (geometry/lanes.h: the same operations, the same bits).
         using lanes::Lanes;
         using Mask = int __attribute__((vector_size(16)));
         // Four lanes while they stay within the row (lanes past hi are written back unchanged:

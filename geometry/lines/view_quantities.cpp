@@ -1,6 +1,6 @@
 #include "view_quantities.h"
 
-#include "geometry/lines/lanes.h"
+#include "geometry/lanes.h"
 #include "geometry/parallel.h"
 
 #include <glm/geometric.hpp>

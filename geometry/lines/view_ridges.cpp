@@ -1,6 +1,6 @@
 #include "view_ridges.h"
 
-#include "geometry/lines/lanes.h"
+#include "geometry/lanes.h"
 #include "geometry/lines/zero_crossings.h"
 #include "geometry/parallel.h"
 
@@ -18,7 +18,7 @@ using namespace lines;
 namespace {
 
 // The view-dependent curvature written once for a scalar F = float and for
-// F = Lanes, four vertices at once (geometry/lines/lanes.h).
+// F = Lanes, four vertices at once (geometry/lanes.h).
 using lanes::Lanes;
 using lanes::larger;
 using lanes::magnitude;

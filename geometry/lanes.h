@@ -1,5 +1,7 @@
-// Four floats at once for the per-vertex passes of geometry/lines (GCC vector
-// extensions: SSE on x86-64, lane-wise code elsewhere). Code written once as a
+// Four floats at once for the per-vertex passes of geometry/lines and the
+// CPU depth raster (GCC vector extensions: SSE on x86-64, lane-wise code
+// elsewhere); the operations every lane type shares (double_lanes.h adds
+// vectors of doubles). Code written once as a
 // template on F = float or F = Lanes runs the same IEEE operations in the same
 // order either way, so a vertex gets the same bits whichever way it is
 // computed (no FMA contraction: the build does not enable FMA).
@@ -7,6 +9,10 @@
 
 #include <cmath>
 #include <cstddef>
+
+// Everything on lanes is inlined into its caller, so that a caller compiled
+// for a wider instruction set (target("avx2")) runs it with that set.
+#define KAPPA_LANES_INLINE [[gnu::always_inline]] inline
 
 namespace kappa::lanes {
 
@@ -20,8 +26,9 @@ inline Lanes root(Lanes x) {
     return Lanes{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
 #endif
 }
-template <typename F> F larger(F a, F b) { return a < b ? b : a; }  // std::max's order
-template <typename F> F magnitude(F x) { return x < 0.0f ? -x : x; }
+// For float, double and their vectors (a vector condition picks lane by lane).
+template <typename F> KAPPA_LANES_INLINE F larger(F a, F b) { return a < b ? b : a; }  // std::max's order
+template <typename F> KAPPA_LANES_INLINE F magnitude(F x) { return x < 0.0f ? -x : x; }
 
 // Lane j of x (x itself for a float).
 inline float lane(float x, int) { return x; }
