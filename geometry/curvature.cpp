@@ -23,7 +23,7 @@ template <typename D>
 KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t first,
                FaceFit* out) {
     using namespace lanes;
-    constexpr int kLanes = sizeof(D) / sizeof(double);
+    constexpr int kLanes = lanes::kLanes<D>;
     bool degenerate[kLanes];
     for (int j = 0; j < kLanes; ++j) degenerate[j] = faces.degenerate(first + j);
     // Degenerate faces are computed too (their lanes are not stored): their
@@ -38,7 +38,7 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
     const Vec3<D> n = normalize(gather3<D>([&](int j) { return faces.area_normals[first + j]; }));
     const Vec3<D> b = cross(n, t);
     const Vec3<D> dn[3] = {vn[2] - vn[1], vn[0] - vn[2], vn[1] - vn[0]};
-    D u[3], v[3], uu = 0.0 * t.x, uv = uu, vv = uu, m[3] = {uu, uu, uu};
+    D u[3], v[3], uu{}, uv{}, vv{}, m[3] = {};
     for (int j = 0; j < 3; ++j) {
         u[j] = dot(e[j], t);
         v[j] = dot(e[j], b);
@@ -53,18 +53,12 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
     const D diag[3] = {uu, uu + vv, vv}, off[2] = {uv, uv};
     D x[3];
     const Mask<D> ok = ldlt_solve_tridiagonal_lanes<3, D>(diag, off, m, x);
-    // Corner k's frame: (u, v) = tangent_frame(vn[k]) (only u is needed),
-    // rotated into the face plane as frame_rotation does.
+    // Corner k's vertex frame, rotated into the face plane.
     D c[3], s[3];
     for (int k = 0; k < 3; ++k) {
-        const Vec3<D>& nv = vn[k];
-        const D sign = sign_of<D>(nv.z), a = -1.0 / (sign + nv.z), bxy = nv.x * nv.y * a;
-        const Vec3<D> fu = {1.0 + sign * nv.x * nv.x * a, sign * bxy, -sign * nv.x};
-        const D ndot = dot(nv, n), ut = dot(fu, t), ub = dot(fu, b);
-        const D un = dot(fu, n) / (1.0 + ndot);
-        const Mask<D> opposite = ndot <= -1.0;
-        c[k] = select<D>(opposite, ut, ut - dot(nv, t) * un);
-        s[k] = select<D>(opposite, -ub, ub - dot(nv, b) * un);
+        Vec3<D> fu, fv;
+        tangent_frame<D>(vn[k], fu, fv);
+        frame_rotation<D>(t, b, n, fu, vn[k], c[k], s[k]);
     }
     for (int j = 0; j < kLanes; ++j) {
         FaceFit fit{};  // all 0: not usable

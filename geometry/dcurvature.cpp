@@ -23,9 +23,9 @@ template <typename D>
 KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
                                         FaceFit* fits) {
     using namespace lanes;
-    constexpr int kLanes = sizeof(D) / sizeof(double);
+    constexpr int kLanes = lanes::kLanes<D>;
     const Vec3<D> edges = gather3<D>([&](int j) { return fits[j].edges(); });
-    const D u[3] = {edges.x, edges.y, -edges.x - edges.y}, v[3] = {0.0 * edges.x, edges.z, -edges.z};
+    const D u[3] = {edges.x, edges.y, -edges.x - edges.y}, v[3] = {D{}, edges.z, -edges.z};
     D ku[3], kuv[3], kv[3];  // the corners' tensors in the face frame
     for (int k = 0; k < 3; ++k) {
         const Vec3<D> t = gather3<D>([&](int j) {
@@ -41,7 +41,7 @@ KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tens
         kuv[k] = s * x0 + c * y0;
         kv[k] = s * x1 + c * y1;
     }
-    D m[4] = {0.0 * u[0], 0.0 * u[0], 0.0 * u[0], 0.0 * u[0]}, uu = m[0], uv = m[0], vv = m[0];
+    D m[4] = {}, uu{}, uv{}, vv{};
     for (int j = 0; j < 3; ++j) {
         const int prev = (j + 2) % 3, next = (j + 1) % 3;
         const D dku = ku[prev] - ku[next], dkuv = kuv[prev] - kuv[next], dkv = kv[prev] - kv[next];

@@ -54,10 +54,10 @@ template <typename D> KAPPA_LANES_INLINE D root(D x) {
     }
 }
 
-// +1 or -1 with the sign bit of x (std::copysign(1.0, x)).
+// +1 or -1 with the sign bit of x (std::copysign(1, x)), also for float.
 template <typename D> KAPPA_LANES_INLINE D sign_of(D x) {
-    if constexpr (std::is_same_v<D, double>) {
-        return std::copysign(1.0, x);
+    if constexpr (std::is_arithmetic_v<D>) {
+        return std::copysign(D(1), x);
     } else {
         const Mask<D> sign_bit = Mask<D>(x) & int64_t(INT64_MIN);
         return D(Mask<D>(D{} + 1.0) | sign_bit);

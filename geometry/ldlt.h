@@ -37,7 +37,7 @@ KAPPA_LANES_INLINE lanes::Mask<D> ldlt_solve_tridiagonal_lanes(const D (&diag)[N
     D a[N], b[N], r[N];  // A / scale, rhs / scale (b[i] at (i, i+1))
     for (int i = 0; i < N; ++i) {
         a[i] = diag[i] * s;
-        b[i] = i + 1 < N ? off[i] * s : 0.0 * s;
+        b[i] = i + 1 < N ? off[i] * s : D{};
         r[i] = rhs[i] * s;
     }
     D minor[N];

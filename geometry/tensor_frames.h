@@ -5,6 +5,8 @@
 // cos^2 loss of a plain projection.
 #pragma once
 
+#include "double_lanes.h"
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -20,13 +22,22 @@ struct Tensor2 {
 };
 
 // A right-handed unit tangent frame for normal n: u x v = n (Duff et al.
-// 2017, "Building an orthonormal basis, revisited"). Depends on n only.
+// 2017, "Building an orthonormal basis, revisited"). Depends on n only. In
+// any number type of lanes.h / double_lanes.h (the same operations, lane by
+// lane), and for glm vectors below.
+template <typename D>
+KAPPA_LANES_INLINE void tangent_frame(const lanes::Vec3<D>& n, lanes::Vec3<D>& u, lanes::Vec3<D>& v) {
+    const D sign = lanes::sign_of<D>(n.z);
+    const D a = -1 / (sign + n.z);
+    const D b = n.x * n.y * a;
+    u = {1 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+    v = {b, sign + n.y * n.y * a, -n.y};
+}
 inline void tangent_frame(const glm::vec3& n, glm::vec3& u, glm::vec3& v) {
-    const float sign = std::copysign(1.0f, n.z);
-    const float a = -1.0f / (sign + n.z);
-    const float b = n.x * n.y * a;
-    u = glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    v = glm::vec3(b, sign + n.y * n.y * a, -n.y);
+    lanes::Vec3<float> fu, fv;
+    tangent_frame<float>({n.x, n.y, n.z}, fu, fv);
+    u = {fu.x, fu.y, fu.z};
+    v = {fv.x, fv.y, fv.z};
 }
 
 // Rotates the frame (u, v) about the axis u x v (its normal) x new_normal so
@@ -88,44 +99,33 @@ inline glm::vec4 project_dcurv(const glm::vec3& old_u, const glm::vec3& old_v, c
 // old basis: new_x = m00 old_x + m01 old_y, new_y = m10 old_x + m11 old_y.
 struct FrameChange {
     float m00 = 1, m01 = 0, m10 = 0, m11 = 1;
-    FrameChange transposed() const { return {m00, m10, m01, m11}; }
 };
 
-// The vertex frame (u, v) (normal nv = u x v), rotated into the plane of the
-// face frame (t, b) (normal nf = t x b) by rotate_frame, in (t, b)
-// coordinates: the coefficients project_tensor computes, in closed form.
-// With k = 1 / (1 + nv.nf), rotate_frame maps x (tangent to nv) to
-// x - (nv + nf) k (x.nf), and t.nf = b.nf = 0. The transpose maps the other
-// way: the rotation is orthogonal.
-inline FrameChange frame_change(const glm::vec3& t, const glm::vec3& b, const glm::vec3& nf, const glm::vec3& u,
-                                const glm::vec3& v, const glm::vec3& nv) {
-    const float ndot = glm::dot(nv, nf);
-    if (ndot <= -1.0f) return {-glm::dot(u, t), -glm::dot(u, b), -glm::dot(v, t), -glm::dot(v, b)};
-    const float k = 1.0f / (1.0f + ndot);
-    const float at = glm::dot(nv, t) * k, ab = glm::dot(nv, b) * k;
-    const float un = glm::dot(u, nf), vn = glm::dot(v, nf);
-    return {glm::dot(u, t) - at * un, glm::dot(u, b) - ab * un, glm::dot(v, t) - at * vn, glm::dot(v, b) - ab * vn};
-}
-
-// The same change when the two frames' planes coincide after the rotation:
-// a rotation by angle phi, rotated u = c t + s b, rotated v = -s t + c b.
-// Two numbers a (vertex, face) pair, computed once and used by the
-// curvature, the vertex-to-face and the face-to-vertex steps of C.
+// A change of frame that is a rotation by angle phi: new x = c old x + s
+// old y, new y = -s old x + c old y. Kept per (vertex, face) corner.
 struct FrameRotation {
     float c, s;
     FrameChange change() const { return {c, s, -s, c}; }
 };
 
-// frame_change's first row, which fixes the rotation (the second row is u x
-// v = nv turned into nf: (-s, c)). Where nv = -nf exactly, rotate_frame's
-// axis is undefined; a half turn about t is taken (u -> (u.t, -u.b)): a
-// proper rotation onto nf, where a half turn about nv would be a reflection.
-inline FrameRotation frame_rotation(const glm::vec3& t, const glm::vec3& b, const glm::vec3& nf, const glm::vec3& u,
-                                    const glm::vec3& nv) {
-    const float ndot = glm::dot(nv, nf);
-    if (ndot <= -1.0f) return {glm::dot(u, t), -glm::dot(u, b)};
-    const float un = glm::dot(u, nf) / (1.0f + ndot);
-    return {glm::dot(u, t) - glm::dot(nv, t) * un, glm::dot(u, b) - glm::dot(nv, b) * un};
+// The vertex frame (u, v) (normal nv = u x v), rotated into the plane of the
+// face frame (t, b) (normal nf = t x b) by rotate_frame, as a rotation from
+// (t, b): (c, s) = (rotated u . t, rotated u . b), the coefficients
+// project_tensor computes, in closed form (rotated v is nv turned into nf,
+// so (-s, c)). With k = 1 / (1 + nv.nf), rotate_frame maps x (tangent to nv)
+// to x - (nv + nf) k (x.nf), and t.nf = b.nf = 0. Where nv = -nf exactly,
+// rotate_frame's axis is undefined; a half turn about t is taken
+// (u -> (u.t, -u.b)): a proper rotation onto nf, where a half turn about nv
+// would be a reflection. Per lane, as tangent_frame.
+template <typename D>
+KAPPA_LANES_INLINE void frame_rotation(const lanes::Vec3<D>& t, const lanes::Vec3<D>& b, const lanes::Vec3<D>& nf,
+                                       const lanes::Vec3<D>& u, const lanes::Vec3<D>& nv, D& c, D& s) {
+    using lanes::dot;
+    const D ndot = dot(nv, nf), ut = dot(u, t), ub = dot(u, b);
+    const D un = dot(u, nf) / (1 + ndot);
+    const lanes::Mask<D> opposite = ndot <= -1;
+    c = lanes::select<D>(opposite, ut, ut - dot(nv, t) * un);
+    s = lanes::select<D>(opposite, -ub, ub - dot(nv, b) * un);
 }
 
 // T in the new frame: M T M^T.
