@@ -12,8 +12,9 @@
 // 2026-11-25 and dropped: measured alternately with another program that
 // had just freed its memory (trimesh2, as the README's comparison runs), a
 // huge page fault cost so much more that `kappa curvature bunny-1M.ply` took
-// 0.48 s instead of 0.37 s on one thread (same on two), and `kappa render`
-// 8% longer.
+// 0.63 s instead of 0.40 s on one thread and 0.38 s instead of 0.33 s on two
+// (medians of 12 rounds; an earlier 10 rounds: 0.48 against 0.37 s on one,
+// 0.25 against 0.26 s on two), and `kappa render` 8% longer.
 #include <malloc.h>
 
 namespace {

@@ -37,12 +37,8 @@ template <> struct MaskOf<Doubles2> { using type = Mask2; };
 template <> struct MaskOf<Doubles4> { using type = Mask4; };
 template <typename D> using Mask = typename MaskOf<D>::type;
 
-template <typename D> KAPPA_LANES_INLINE D select(Mask<D> m, D a, D b) {
-    if constexpr (std::is_same_v<D, double>)
-        return m ? a : b;
-    else
-        return m ? a : b;  // lane-wise (GCC vector conditional)
-}
+// a where m is set, else b (lane by lane for vectors: GCC's vector conditional).
+template <typename D> KAPPA_LANES_INLINE D select(Mask<D> m, D a, D b) { return m ? a : b; }
 
 template <typename D> KAPPA_LANES_INLINE D root(D x) {
     if constexpr (std::is_same_v<D, double>) {

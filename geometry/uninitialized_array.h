@@ -1,9 +1,10 @@
 // An owning array whose elements are left uninitialised on allocation, for
 // big temporaries that a parallel pass then fills whole. Their pages are
-// first touched, and so mapped and cleared by the kernel, by the threads
-// that fill them, in parallel, instead of being zeroed by the allocating
-// thread first (a std::vector's resize): on the machines we measure, fresh
-// memory costs about 0.5 to 1 ms per MB, more than some passes' arithmetic.
+// mapped and cleared by the kernel for the threads that fill them (or that
+// io::prefault them), in parallel, instead of being zeroed by the
+// allocating thread first (a std::vector's resize): on the machines we
+// measure, fresh memory costs about 0.5 to 3 ms per MB, more than some
+// passes' arithmetic.
 #pragma once
 
 #include <cstddef>

@@ -20,8 +20,8 @@ void prefault(void* data, size_t bytes) {
     uintptr_t begin = (uintptr_t(data) + page - 1) & ~(page - 1);
     uintptr_t end = (uintptr_t(data) + bytes) & ~(page - 1);
     if (end <= begin) return;
-    // The kernel clears the pages of each thread's share in parallel: 2 MiB
-    // steps, a huge page each where the block has them.
+    // The kernel clears the pages of each thread's share in parallel, in
+    // steps of 2 MiB.
     constexpr uintptr_t kStep = uintptr_t(2) << 20;
     const size_t steps = (end - begin + kStep - 1) / kStep;
     parallel_for_ranges(steps, [&](size_t first, size_t last) {
