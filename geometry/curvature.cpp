@@ -23,19 +23,17 @@ template <typename D>
 KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t first,
                FaceFit* out) {
     using namespace lanes;
-    constexpr int kLanes = lanes::kLanes<D>;
-    bool degenerate[kLanes];
-    for (int j = 0; j < kLanes; ++j) degenerate[j] = faces.degenerate(first + j);
-    // Degenerate faces are computed too (their lanes are not stored): their
-    // indices are valid, and whatever their numbers give is dropped.
+    using F = FloatsFor<D>;
+    // Degenerate faces are computed too (their records are stored all 0):
+    // their indices are valid, and whatever their numbers give is dropped.
     Vec3<D> p[3], vn[3];
     for (int c = 0; c < 3; ++c) {
-        p[c] = gather3<D>([&](int j) { return mesh.positions[mesh.faces[first + j][c]]; });
-        vn[c] = gather3<D>([&](int j) { return normals[mesh.faces[first + j][c]]; });
+        p[c] = widen3<D>(load3<D>([&](int j) { return &mesh.positions[mesh.faces[first + j][c]].x; }));
+        vn[c] = widen3<D>(load3<D>([&](int j) { return &normals[mesh.faces[first + j][c]].x; }));
     }
     const Vec3<D> e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
     const Vec3<D> t = normalize(e[0]);
-    const Vec3<D> n = normalize(gather3<D>([&](int j) { return faces.area_normals[first + j]; }));
+    const Vec3<D> n = normalize(widen3<D>(load3<D>([&](int j) { return &faces.area_normals[first + j].x; })));
     const Vec3<D> b = cross(n, t);
     const Vec3<D> dn[3] = {vn[2] - vn[1], vn[0] - vn[2], vn[1] - vn[0]};
     D u[3], v[3], uu{}, uv{}, vv{}, m[3] = {};
@@ -60,16 +58,19 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
         tangent_frame<D>(vn[k], fu, fv);
         frame_rotation<D>(t, b, n, fu, vn[k], c[k], s[k]);
     }
-    for (int j = 0; j < kLanes; ++j) {
-        FaceFit fit{};  // all 0: not usable
-        if (!degenerate[j] && lane(ok, j)) {
-            const glm::vec3 h = tensor_harmonics({float(lane(x[0], j)), float(lane(x[1], j)), float(lane(x[2], j))});
-            const double values[6] = {h[0], h[1], h[2], lane(u[0], j), lane(u[1], j), lane(v[1], j)};
-            for (int k = 0; k < 6; ++k) fit.fit[k] = float(values[k]);
-            fit.weights = faces.corner_areas[first + j];
-            for (int k = 0; k < 3; ++k) fit.corners[k] = {float(lane(c[k], j)), float(lane(s[k], j))};
-        }
-        out[j] = fit;  // one store of the whole line
+    // The records, lane j into out[j]: FaceFit's 16 floats in order, all 0
+    // where the face is degenerate (corner areas all 0) or its fit failed.
+    const Vec3<F> w = load3<D>([&](int j) { return &faces.corner_areas[first + j].x; });
+    const FloatMask<D> usable = narrow_mask<D>(ok) & ((w.x != 0.0f) | (w.y != 0.0f) | (w.z != 0.0f));
+    const D h0 = 0.5 * (x[0] + x[2]), a2 = 0.5 * (x[0] - x[2]);  // tensor_harmonics of (x0, x1, x2)
+    const F record[16] = {narrow<D>(h0),   narrow<D>(a2),   narrow<D>(x[1]), narrow<D>(u[0]),
+                          narrow<D>(u[1]), narrow<D>(v[1]), w.x,             w.y,
+                          w.z,             narrow<D>(c[0]), narrow<D>(s[0]), narrow<D>(c[1]),
+                          narrow<D>(s[1]), narrow<D>(c[2]), narrow<D>(s[2]), F{}};
+    for (int k = 0; k < 16; k += 4) {
+        const F kept[4] = {keep<D>(usable, record[k]), keep<D>(usable, record[k + 1]),
+                           keep<D>(usable, record[k + 2]), keep<D>(usable, record[k + 3])};
+        store4<D>(kept, reinterpret_cast<float*>(out) + k);
     }
 }
 

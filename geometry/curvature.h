@@ -19,6 +19,7 @@
 #include "vertex_faces.h"
 
 #include <glm/vec3.hpp>
+#include <cstddef>
 #include <vector>
 
 namespace kappa {
@@ -48,6 +49,8 @@ struct alignas(64) FaceFit {
     bool usable() const { return weights != glm::vec3(0.0f); }
 };
 static_assert(sizeof(FaceFit) == 64, "FaceFit: one cache line");
+static_assert(offsetof(FaceFit, weights) == 6 * sizeof(float) && offsetof(FaceFit, corners) == 9 * sizeof(float),
+              "FaceFit: 16 floats in order (the face steps store them as such)");
 
 using FaceFits = UninitializedArray<FaceFit>;  // filled by compute_curvature_tensors
 

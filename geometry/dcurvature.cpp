@@ -17,23 +17,24 @@ namespace {
 // the edges, the kuv equation counted twice (kuv appears twice in the
 // tensor): normal equations, SPD and tridiagonal,
 // [[uu, uv, 0, 0], [uv, 2uu + vv, 2uv, 0], [0, 2uv, uu + 2vv, uv], [0, 0, uv, vv]] (a, b, c, d)^T = m.
-// Faces not usable are computed too (their lanes are not stored): their
-// records are all zero and their indices valid.
+// Faces not usable are computed too: their records are all zero (so is
+// what is stored back) and their indices valid.
 template <typename D>
 KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
                                         FaceFit* fits) {
     using namespace lanes;
-    constexpr int kLanes = lanes::kLanes<D>;
-    const Vec3<D> edges = gather3<D>([&](int j) { return fits[j].edges(); });
+    using F = FloatsFor<D>;
+    const auto record = [&](int j) { return reinterpret_cast<const float*>(&fits[j]); };  // FaceFit's 16 floats
+    const Vec3<D> edges = widen3<D>(load3<D>([&](int j) { return record(j) + 3; }));
     const D u[3] = {edges.x, edges.y, -edges.x - edges.y}, v[3] = {D{}, edges.z, -edges.z};
     D ku[3], kuv[3], kv[3];  // the corners' tensors in the face frame
+    F c0{};                  // corner 0's c, stored back unchanged after the weights
     for (int k = 0; k < 3; ++k) {
-        const Vec3<D> t = gather3<D>([&](int j) {
-            const Tensor2& tensor = tensors[mesh.faces[first + j][k]];
-            return glm::vec3(tensor.ku, tensor.kuv, tensor.kv);
-        });
-        const D c = gather<D>([&](int j) { return double(fits[j].corners[k].c); });
-        const D s = gather<D>([&](int j) { return double(fits[j].corners[k].s); });
+        const Vec3<D> t = widen3<D>(load3<D>([&](int j) { return &tensors[mesh.faces[first + j][k]].ku; }));
+        F fc, fs;
+        load2<D>([&](int j) { return record(j) + 9 + 2 * k; }, fc, fs);
+        if (k == 0) c0 = fc;
+        const D c = widen<D>(fc), s = widen<D>(fs);
         // transform_tensor by the transposed rotation, rows (c, -s) and (s, c): M T M^T.
         const D x0 = t.x * c - t.y * s, y0 = t.y * c - t.z * s;
         const D x1 = t.x * s + t.y * c, y1 = t.y * s + t.z * c;
@@ -55,16 +56,17 @@ KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tens
     }
     const D diag[4] = {uu, 2.0 * uu + vv, uu + 2.0 * vv, vv}, off[3] = {uv, 2.0 * uv, uv};
     D x[4];
-    const Mask<D> ok = ldlt_solve_tridiagonal_lanes<4, D>(diag, off, m, x);
-    for (int j = 0; j < kLanes; ++j) {
-        if (!fits[j].usable()) continue;
-        if (!lane(ok, j)) {
-            fits[j].weights = glm::vec3(0.0f);
-            continue;
-        }
-        const glm::vec4 h = dcurv_harmonics(glm::vec4(lane(x[0], j), lane(x[1], j), lane(x[2], j), lane(x[3], j)));
-        for (int k = 0; k < 4; ++k) fits[j].fit[k] = h[k];
-    }
+    const FloatMask<D> ok = narrow_mask<D>(ldlt_solve_tridiagonal_lanes<4, D>(diag, off, m, x));
+    // C's harmonics (dcurv_harmonics) replace the fit; a face whose fit
+    // failed gets weight 0 (unusable faces have weight 0 already).
+    const D h[4] = {0.75 * (x[0] + x[2]), 0.75 * (x[1] + x[3]), 0.25 * (x[0] - 3.0 * x[2]),
+                    0.25 * (3.0 * x[1] - x[3])};
+    const Vec3<F> w = load3<D>([&](int j) { return record(j) + 6; });
+    const F harmonics[4] = {keep<D>(ok, narrow<D>(h[0])), keep<D>(ok, narrow<D>(h[1])), keep<D>(ok, narrow<D>(h[2])),
+                            keep<D>(ok, narrow<D>(h[3]))};
+    const F weights_c0[4] = {keep<D>(ok, w.x), keep<D>(ok, w.y), keep<D>(ok, w.z), c0};
+    store4<D>(harmonics, reinterpret_cast<float*>(fits));
+    store4<D>(weights_c0, reinterpret_cast<float*>(fits) + 6);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 // Vectors of four doubles are passed in two SSE registers on baseline x86-64;
@@ -40,15 +41,22 @@ template <typename D> using Mask = typename MaskOf<D>::type;
 // a where m is set, else b (lane by lane for vectors: GCC's vector conditional).
 template <typename D> KAPPA_LANES_INLINE D select(Mask<D> m, D a, D b) { return m ? a : b; }
 
-template <typename D> KAPPA_LANES_INLINE D root(D x) {
-    if constexpr (std::is_same_v<D, double>) {
-        return std::sqrt(x);
-    } else {
-        D r = x;
-        for (int j = 0; j < kLanes<D>; ++j) r[j] = std::sqrt(x[j]);
-        return r;
-    }
+// Square roots (correctly rounded, so the same bits in every lane type).
+KAPPA_LANES_INLINE double root(double x) { return std::sqrt(x); }
+#if defined(__x86_64__)
+KAPPA_LANES_INLINE Doubles2 root(Doubles2 x) { return __builtin_ia32_sqrtpd(x); }
+KAPPA_LANES_INLINE Doubles4 root(Doubles4 x) {  // two halves: AVX's sqrtpd needs the AVX target
+    const Doubles2 lo = __builtin_ia32_sqrtpd(__builtin_shufflevector(x, x, 0, 1));
+    const Doubles2 hi = __builtin_ia32_sqrtpd(__builtin_shufflevector(x, x, 2, 3));
+    return __builtin_shufflevector(lo, hi, 0, 1, 2, 3);
 }
+#else
+template <typename D> KAPPA_LANES_INLINE D root(D x) {
+    D r = x;
+    for (int j = 0; j < kLanes<D>; ++j) r[j] = std::sqrt(x[j]);
+    return r;
+}
+#endif
 
 // +1 or -1 with the sign bit of x (std::copysign(1, x)), also for float.
 template <typename D> KAPPA_LANES_INLINE D sign_of(D x) {
@@ -107,6 +115,99 @@ template <typename D, typename Get> KAPPA_LANES_INLINE Vec3<D> gather3(Get get) 
             r.z[j] = v.z;
         }
         return r;
+    }
+}
+
+// Floats as many as D has lanes (float for one double), and their
+// comparison results: what the face steps load and store, widened to D and
+// narrowed back (exact one way, rounded to nearest the other, as a scalar
+// conversion does).
+using Floats2 = float __attribute__((vector_size(8)));
+using Ints2 = int32_t __attribute__((vector_size(8)));
+using Ints4 = int32_t __attribute__((vector_size(16)));
+template <typename D> struct FloatsOf { using type = float; using mask = bool; };
+template <> struct FloatsOf<Doubles2> { using type = Floats2; using mask = Ints2; };
+template <> struct FloatsOf<Doubles4> { using type = Lanes; using mask = Ints4; };
+template <typename D> using FloatsFor = typename FloatsOf<D>::type;
+template <typename D> using FloatMask = typename FloatsOf<D>::mask;
+
+template <typename D> KAPPA_LANES_INLINE D widen(FloatsFor<D> f) {
+    if constexpr (std::is_same_v<D, double>) return f;
+    else return __builtin_convertvector(f, D);
+}
+template <typename D> KAPPA_LANES_INLINE FloatsFor<D> narrow(D x) {
+    if constexpr (std::is_same_v<D, double>) return float(x);
+    else return __builtin_convertvector(x, FloatsFor<D>);
+}
+template <typename D> KAPPA_LANES_INLINE FloatMask<D> narrow_mask(Mask<D> m) {
+    if constexpr (std::is_same_v<D, double>) return m;
+    else return __builtin_convertvector(m, FloatMask<D>);
+}
+// f where m is set, else 0.
+template <typename D> KAPPA_LANES_INLINE FloatsFor<D> keep(FloatMask<D> m, FloatsFor<D> f) {
+    if constexpr (std::is_same_v<D, double>) return m ? f : 0.0f;
+    else return FloatsFor<D>(FloatMask<D>(f) & m);
+}
+
+// Per lane, the two floats at get(lane) (a const float*), as two float
+// lanes: one 8-byte load a lane, rearranged in registers.
+template <typename D, typename Get> KAPPA_LANES_INLINE void load2(Get get, FloatsFor<D>& x, FloatsFor<D>& y) {
+    constexpr int L = kLanes<D>;
+    if constexpr (L == 1) {
+        const float* p = get(0);
+        x = p[0];
+        y = p[1];
+    } else {
+        Floats2 xy[L];
+        for (int j = 0; j < L; ++j) std::memcpy(&xy[j], get(j), sizeof(Floats2));
+        if constexpr (L == 2) {
+            x = __builtin_shufflevector(xy[0], xy[1], 0, 2);
+            y = __builtin_shufflevector(xy[0], xy[1], 1, 3);
+        } else {
+            const Lanes lo = __builtin_shufflevector(xy[0], xy[1], 0, 2, 1, 3);  // x0 x1 y0 y1
+            const Lanes hi = __builtin_shufflevector(xy[2], xy[3], 0, 2, 1, 3);  // x2 x3 y2 y3
+            x = __builtin_shufflevector(lo, hi, 0, 1, 4, 5);
+            y = __builtin_shufflevector(lo, hi, 2, 3, 6, 7);
+        }
+    }
+}
+
+// Per lane, the three floats at get(lane), as float lanes (x and y loaded
+// together, then z).
+template <typename D, typename Get> KAPPA_LANES_INLINE Vec3<FloatsFor<D>> load3(Get get) {
+    constexpr int L = kLanes<D>;
+    const float* p[L];
+    for (int j = 0; j < L; ++j) p[j] = get(j);
+    Vec3<FloatsFor<D>> r;
+    load2<D>([&](int j) { return p[j]; }, r.x, r.y);
+    if constexpr (L == 1) r.z = p[0][2];
+    else for (int j = 0; j < L; ++j) r.z[j] = p[j][2];
+    return r;
+}
+template <typename D> KAPPA_LANES_INLINE Vec3<D> widen3(const Vec3<FloatsFor<D>>& f) {
+    return {widen<D>(f.x), widen<D>(f.y), widen<D>(f.z)};
+}
+
+// Writes four float lanes as four consecutive floats in each of L records
+// 64 bytes apart: lane j at out + 64 j, v[0][j] to v[3][j] (a transposition
+// in registers, then one store a record).
+template <typename D> KAPPA_LANES_INLINE void store4(const FloatsFor<D> (&v)[4], void* out) {
+    char* bytes = static_cast<char*>(out);
+    constexpr int L = kLanes<D>;
+    if constexpr (L == 1) {
+        std::memcpy(bytes, v, 16);
+    } else if constexpr (L == 2) {
+        const Lanes r0 = {v[0][0], v[1][0], v[2][0], v[3][0]}, r1 = {v[0][1], v[1][1], v[2][1], v[3][1]};
+        std::memcpy(bytes, &r0, 16);
+        std::memcpy(bytes + 64, &r1, 16);
+    } else {
+        const Lanes t0 = __builtin_shufflevector(v[0], v[1], 0, 4, 1, 5);  // a0 b0 a1 b1
+        const Lanes t1 = __builtin_shufflevector(v[0], v[1], 2, 6, 3, 7);  // a2 b2 a3 b3
+        const Lanes t2 = __builtin_shufflevector(v[2], v[3], 0, 4, 1, 5);
+        const Lanes t3 = __builtin_shufflevector(v[2], v[3], 2, 6, 3, 7);
+        const Lanes r[4] = {__builtin_shufflevector(t0, t2, 0, 1, 4, 5), __builtin_shufflevector(t0, t2, 2, 3, 6, 7),
+                            __builtin_shufflevector(t1, t3, 0, 1, 4, 5), __builtin_shufflevector(t1, t3, 2, 3, 6, 7)};
+        for (int j = 0; j < 4; ++j) std::memcpy(bytes + 64 * j, &r[j], 16);
     }
 }
 
