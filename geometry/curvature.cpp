@@ -92,11 +92,11 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
     out.tensor.resize(nv);
     parallel_for(nv, [&](size_t vi) {
         // Summed as harmonics (tensor_frames.h) in the vertex frame.
-        glm::vec3 sum(0.0f);
-        const float wsum = add_face_values(vf, fits, vi, sum, [](const FaceFit& fit, const FrameRotation& r) {
-            return turn_tensor_harmonics(fit.tensor_harmonics(), r.c, r.s);
+        lanes::Lanes sum{};
+        const float wsum = add_face_values(vf, fits, vi, sum, [](lanes::Lanes fit, const FrameRotation& r) {
+            return turn_tensor_harmonics(fit, r.c, r.s);  // (h0, a2, b2, edge): the edge lane turns to 0
         });
-        if (wsum > 0) out.tensor[vi] = tensor_from_harmonics(sum / wsum);
+        if (wsum > 0) out.tensor[vi] = tensor_from_harmonics(glm::vec3(sum[0], sum[1], sum[2]) / wsum);
     });
     return out;
 }

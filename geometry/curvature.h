@@ -20,6 +20,7 @@
 
 #include <glm/vec3.hpp>
 #include <cstddef>
+#include <cstring>
 #include <vector>
 
 namespace kappa {
@@ -43,9 +44,6 @@ struct alignas(64) FaceFit {
     // the face's plane (sec. 3.3), as a rotation from (t, b).
     FrameRotation corners[3];
 
-    glm::vec3 tensor_harmonics() const { return {fit[0], fit[1], fit[2]}; }
-    glm::vec3 edges() const { return {fit[3], fit[4], fit[5]}; }
-    glm::vec4 dcurv_harmonics() const { return {fit[0], fit[1], fit[2], fit[3]}; }
     bool usable() const { return weights != glm::vec3(0.0f); }
 };
 static_assert(sizeof(FaceFit) == 64, "FaceFit: one cache line");
@@ -56,9 +54,10 @@ using FaceFits = UninitializedArray<FaceFit>;  // filled by compute_curvature_te
 
 // Adds w * turned(fit, rotation) to `sum` over vertex v's usable faces, w the
 // corner's weight and rotation its frame rotation, in face order; returns
-// the sum of the weights. The gather of both vertex steps.
-template <typename T, typename Turned>
-float add_face_values(const VertexFaces& vf, const FaceFits& fits, size_t v, T& sum, const Turned& turned) {
+// the sum of the weights. The gather of both vertex steps; `turned` gives
+// four float lanes (tensor_frames.h's turn_*_harmonics).
+template <typename Turned>
+float add_face_values(const VertexFaces& vf, const FaceFits& fits, size_t v, lanes::Lanes& sum, const Turned& turned) {
     float wsum = 0;
     for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) {
         const uint32_t c = vf.corners[k];
@@ -66,7 +65,9 @@ float add_face_values(const VertexFaces& vf, const FaceFits& fits, size_t v, T& 
         const FaceFit& fit = fits[c / 3];
         const float w = fit.weights[c % 3];
         if (!(w > 0)) continue;
-        sum += w * turned(fit, fit.corners[c % 3]);
+        lanes::Lanes values;
+        std::memcpy(&values, fit.fit, sizeof values);
+        sum += w * turned(values, fit.corners[c % 3]);
         wsum += w;
     }
     return wsum;

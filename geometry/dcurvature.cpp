@@ -86,16 +86,16 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
     parallel_for(nv, [&](size_t vi) {
         // Average in the vertex frame (u, v), as harmonics (tensor_frames.h),
         // then turn the (linear) result into the principal frame.
-        glm::vec4 sum(0.0f);
-        const float wsum = add_face_values(vf, fits, vi, sum, [](const FaceFit& fit, const FrameRotation& r) {
-            return turn_dcurv_harmonics(fit.dcurv_harmonics(), r.c, r.s);
+        lanes::Lanes sum{};
+        const float wsum = add_face_values(vf, fits, vi, sum, [](lanes::Lanes fit, const FrameRotation& r) {
+            return turn_dcurv_harmonics(fit, r.c, r.s);
         });
         if (!(wsum > 0)) return;
         // d1 = c u + s v: the principal frame is (u, v) turned by atan2(s, c).
         glm::vec3 u, v;
         tangent_frame(normals[vi], u, v);
         const float c = glm::dot(d1[vi], u), s = glm::dot(d1[vi], v);
-        dcurv[vi] = dcurv_from_harmonics(turn_dcurv_harmonics(sum / wsum, c, s));
+        dcurv[vi] = dcurv_from_harmonics(turn_dcurv_harmonics(glm::vec4(sum[0], sum[1], sum[2], sum[3]) / wsum, c, s));
     });
     return dcurv;
 }

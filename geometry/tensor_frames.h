@@ -157,10 +157,17 @@ inline glm::vec4 transform_dcurv(const FrameChange& m, const glm::vec4& C) {
 // does not change): cheaper than transform_tensor, and linear.
 inline glm::vec3 tensor_harmonics(const Tensor2& t) { return {0.5f * (t.ku + t.kv), 0.5f * (t.ku - t.kv), t.kuv}; }
 inline Tensor2 tensor_from_harmonics(const glm::vec3& h) { return {h[0] + h[1], h[2], h[0] - h[1]}; }
-// The harmonics in the frame turned by phi, (c, s) = (cos phi, sin phi), c^2 + s^2 = 1.
-inline glm::vec3 turn_tensor_harmonics(const glm::vec3& h, float c, float s) {
+// The harmonics in the frame turned by phi, (c, s) = (cos phi, sin phi), c^2 + s^2 = 1:
+// (h0, a2 cos 2phi + b2 sin 2phi, b2 cos 2phi - a2 sin 2phi), as lanes (h0, a2, b2, any),
+// lane 3 of the result 0 (for finite input).
+inline lanes::Lanes turn_tensor_harmonics(lanes::Lanes h, float c, float s) {
     const float c2 = c * c - s * s, s2 = 2.0f * c * s;  // cos 2phi, sin 2phi
-    return {h[0], h[1] * c2 + h[2] * s2, h[2] * c2 - h[1] * s2};
+    const lanes::Lanes swapped = __builtin_shufflevector(h, h, 0, 2, 1, 3);
+    return h * lanes::Lanes{1, c2, c2, 0} + swapped * lanes::Lanes{0, s2, -s2, 0};
+}
+inline glm::vec3 turn_tensor_harmonics(const glm::vec3& h, float c, float s) {
+    const lanes::Lanes r = turn_tensor_harmonics(lanes::Lanes{h[0], h[1], h[2], 0}, c, s);
+    return {r[0], r[1], r[2]};
 }
 
 // C by its harmonics: on the unit circle x = (cos t, sin t),
@@ -178,9 +185,16 @@ inline glm::vec4 dcurv_from_harmonics(const glm::vec4& h) {
 }
 // The harmonics of C in the frame turned by phi, (c, s) = (cos phi, sin phi)
 // (FrameRotation's new x axis), c^2 + s^2 = 1.
-inline glm::vec4 turn_dcurv_harmonics(const glm::vec4& h, float c, float s) {
+// (a1 c + b1 s, b1 c - a1 s, a3 c3 + b3 s3, b3 c3 - a3 s3), c3 and s3 those of 3 phi: as
+// lanes, and for glm.
+inline lanes::Lanes turn_dcurv_harmonics(lanes::Lanes h, float c, float s) {
     const float c3 = c * (4.0f * c * c - 3.0f), s3 = s * (3.0f - 4.0f * s * s);  // cos 3phi, sin 3phi
-    return {h[0] * c + h[1] * s, h[1] * c - h[0] * s, h[2] * c3 + h[3] * s3, h[3] * c3 - h[2] * s3};
+    const lanes::Lanes swapped = __builtin_shufflevector(h, h, 1, 0, 3, 2);
+    return h * lanes::Lanes{c, c, c3, c3} + swapped * lanes::Lanes{s, -s, s3, -s3};
+}
+inline glm::vec4 turn_dcurv_harmonics(const glm::vec4& h, float c, float s) {
+    const lanes::Lanes r = turn_dcurv_harmonics(lanes::Lanes{h[0], h[1], h[2], h[3]}, c, s);
+    return {r[0], r[1], r[2], r[3]};
 }
 
 // Eigen-decomposition of tensor t in frame (u, v) with normal n = u x v by
