@@ -15,7 +15,8 @@ void set_thread_count(unsigned n) { g_threads = n; }
 
 unsigned thread_count() {
     unsigned n = g_threads;
-    if (n == 0) n = std::max(1u, std::thread::hardware_concurrency());
+    static const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());  // reads /sys each call
+    if (n == 0) n = hardware;
     return n;
 }
 

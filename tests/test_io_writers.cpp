@@ -1,5 +1,6 @@
 // PLY and CSV writers: round trips, the exact CSV layout of conventions.md,
 // and write errors.
+#include "geometry/io/output_file.h"
 #include "geometry/parallel.h"
 #include "test_io_support.h"
 #include "test_support.h"
@@ -191,4 +192,32 @@ TEST_CASE("writers: errors name the path (missing directory, disk full, mismatch
     short_fields.k2.pop_back();
     std::string path = kappa::test::temp_dir() + "/out.ply";
     expect_write_error([&] { write_ply(path, s.mesh, short_fields); }, path, "'k2' has 49 entries");
+}
+
+TEST_CASE("writers: an existing longer file is rewritten to exactly the new bytes", "[io][writers]") {
+    // OutputFile rewrites in place (no O_TRUNC) and cuts to length: nothing
+    // of the old file may survive after the new bytes, however it ends.
+    const std::string dir = kappa::test::temp_dir();
+    const Sample big = make_sample(5000), small = make_sample(40);
+    write_ply(dir + "/fresh.ply", small.mesh, small.fields);
+    write_csv(dir + "/fresh.csv", small.mesh, small.fields);
+    for (const char* name : {"/over.ply", "/over.csv"}) {
+        const std::string path = dir + name;
+        write_ply(path, big.mesh, big.fields);  // longer than either small output
+        REQUIRE(kappa::test::read_file(path).size() > 100000);
+        if (std::string(name) == "/over.ply")
+            write_ply(path, small.mesh, small.fields);
+        else
+            write_csv(path, small.mesh, small.fields);
+        const std::string fresh = kappa::test::read_file(dir + (std::string(name) == "/over.ply" ? "/fresh.ply" : "/fresh.csv"));
+        CHECK(kappa::test::read_file(path) == fresh);
+    }
+    // Abandoned (an exception while writing): cut after what was written.
+    const std::string path = dir + "/abandoned.ply";
+    write_ply(path, big.mesh, big.fields);
+    {
+        io::OutputFile file(path);
+        file.write("partial");
+    }
+    CHECK(kappa::test::read_file(path) == "partial");
 }

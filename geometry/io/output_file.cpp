@@ -11,13 +11,20 @@
 
 namespace kappa::io {
 
+// Opened without O_TRUNC: an existing file is rewritten in place and cut to
+// the length written when closed (or abandoned). Truncating a big file
+// first makes the kernel free every page of it and then allocate them all
+// again for the new bytes: for a 55 MB PLY rewritten by the same job, 5-10%
+// of `kappa curvature bunny-1M.ply`'s time (README, Speed).
 OutputFile::OutputFile(const std::string& path) : path_(path) {
-    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0) fail("cannot open for writing", errno);
 }
 
 OutputFile::~OutputFile() {
-    if (fd_ >= 0) ::close(fd_);
+    if (fd_ < 0) return;
+    cut_to_written();  // abandoned: no old bytes after the new ones
+    ::close(fd_);
 }
 
 void OutputFile::write(const char* data, size_t size) {
@@ -30,17 +37,28 @@ void OutputFile::write(const char* data, size_t size) {
         if (n == 0) fail("write failed", EIO);
         data += n;
         size -= size_t(n);
+        written_ += size_t(n);
     }
 }
 
+bool OutputFile::cut_to_written() {
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode) || size_t(st.st_size) <= written_) return true;
+    return ::ftruncate(fd_, off_t(written_)) == 0;
+}
+
 void OutputFile::close() {
+    if (!cut_to_written()) fail("cannot cut to length", errno);
     int fd = fd_;
     fd_ = -1;
     if (::close(fd) != 0) fail("write failed at close", errno);
 }
 
 void OutputFile::fail(const std::string& what, int error) {
-    if (fd_ >= 0) ::close(fd_);
+    if (fd_ >= 0) {
+        cut_to_written();
+        ::close(fd_);
+    }
     fd_ = -1;
     fail_write(path_, what + ": " + std::strerror(error));
 }

@@ -11,8 +11,11 @@ namespace kappa::io {
 
 class OutputFile {
 public:
-    explicit OutputFile(const std::string& path);  // creates or truncates
-    ~OutputFile();                                 // closes silently if close() was not called
+    // Creates the file, or rewrites an existing one in place: cut to the
+    // length written at close (or when abandoned), so it then holds exactly
+    // what was written.
+    explicit OutputFile(const std::string& path);
+    ~OutputFile();  // cuts and closes silently if close() was not called
     OutputFile(const OutputFile&) = delete;
     OutputFile& operator=(const OutputFile&) = delete;
 
@@ -23,9 +26,11 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& what, int error);
+    bool cut_to_written();  // a longer regular file cut to written_; false on failure (errno)
 
     std::string path_;
     int fd_ = -1;
+    size_t written_ = 0;
 };
 
 // The extension of a path's file name in lower case, without the dot ("" when
