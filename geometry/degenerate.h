@@ -1,6 +1,8 @@
 // When a triangle is too thin to carry any geometric information.
 #pragma once
 
+#include "double_lanes.h"
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -13,10 +15,20 @@ namespace kappa {
 // longest squared edge (its smallest angle is below ~1e-7 rad), i.e. it is
 // collinear to float precision, or when it is not finite. Such faces get
 // zero weight everywhere (normals, areas, curvature) instead of NaN.
+// The test the other way round, per lane (double_lanes.h): set where the
+// triangle with edges e0, e1, e2 is usable.
+template <typename D>
+KAPPA_LANES_INLINE lanes::Mask<D> nondegenerate_triangle(const lanes::Vec3<D>& e0, const lanes::Vec3<D>& e1,
+                                                         const lanes::Vec3<D>& e2) {
+    using namespace lanes;
+    const Vec3<D> twice_area_normal = cross(e0, e1);
+    const D twice_area = root(dot(twice_area_normal, twice_area_normal));
+    const D longest2 = larger(larger(dot(e0, e0), dot(e1, e1)), dot(e2, e2));  // std::max's order
+    return (twice_area > 1e-7 * longest2) & (twice_area - twice_area == 0.0);   // the latter: finite
+}
 inline bool is_degenerate_triangle(const glm::dvec3& e0, const glm::dvec3& e1, const glm::dvec3& e2) {
-    const double twice_area = glm::length(glm::cross(e0, e1));
-    const double longest2 = std::max({glm::dot(e0, e0), glm::dot(e1, e1), glm::dot(e2, e2)});
-    return !(twice_area > 1e-7 * longest2) || !std::isfinite(twice_area);
+    using V = lanes::Vec3<double>;
+    return !nondegenerate_triangle<double>(V{e0.x, e0.y, e0.z}, V{e1.x, e1.y, e1.z}, V{e2.x, e2.y, e2.z});
 }
 
 }  // namespace kappa

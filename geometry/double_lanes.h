@@ -211,6 +211,30 @@ template <typename D> KAPPA_LANES_INLINE void store4(const FloatsFor<D> (&v)[4],
     }
 }
 
+// Writes three float lanes as L consecutive (x, y, z) triples (a
+// glm::vec3 array): lane j at out + 3 j.
+template <typename D> KAPPA_LANES_INLINE void store3(const Vec3<FloatsFor<D>>& v, float* out) {
+    constexpr int L = kLanes<D>;
+    if constexpr (L == 1) {
+        out[0] = v.x;
+        out[1] = v.y;
+        out[2] = v.z;
+    } else if constexpr (L == 2) {
+        const Lanes r0 = {v.x[0], v.y[0], v.z[0], v.x[1]};
+        const Floats2 r1 = {v.y[1], v.z[1]};
+        std::memcpy(out, &r0, 16);
+        std::memcpy(out + 4, &r1, 8);
+    } else {
+        const Lanes a = __builtin_shufflevector(v.x, v.y, 0, 4, 1, 5);  // x0 y0 x1 y1
+        const Lanes c = __builtin_shufflevector(v.x, v.y, 2, 6, 3, 7);  // x2 y2 x3 y3
+        const Lanes d = __builtin_shufflevector(a, v.z, 3, 5, 3, 5);    // y1 z1 y1 z1
+        const Lanes r[3] = {__builtin_shufflevector(a, v.z, 0, 1, 4, 2),   // x0 y0 z0 x1
+                            __builtin_shufflevector(d, c, 0, 1, 4, 5),     // y1 z1 x2 y2
+                            __builtin_shufflevector(c, v.z, 6, 2, 3, 7)};  // z2 x3 y3 z3
+        std::memcpy(out, r, 48);
+    }
+}
+
 // Whether this processor runs AVX2, for the loops that have a version
 // compiled for it (with Doubles4) besides the baseline one (Doubles2).
 // allow_avx2(false) makes every loop take the baseline path (for tests).
