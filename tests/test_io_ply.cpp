@@ -1,5 +1,6 @@
 // Handcrafted PLY files: every encoding, every property type and alias,
 // extra and list properties, unknown elements, polygons and triangle strips.
+#include "geometry/parallel.h"
 #include "test_io_support.h"
 
 #include <cstdio>
@@ -268,4 +269,50 @@ TEST_CASE("PLY: element order, no faces, and several face elements", "[io][ply]"
             Bytes().le(1.0f).le(2.0f).le(3.0f).str());
         CHECK(m.vertex_count() == 1);
     }
+}
+
+TEST_CASE("PLY: many triangles read by all threads, and what makes the reader fall back", "[io][ply]") {
+    // 70,000 faces (the parallel path takes 65,536 or more, io/ply_reader.cpp)
+    // with an int before and a float after the list; then the same with one
+    // quad, one bad index and one truncated record, which the serial loop
+    // must handle exactly as for a short file.
+    const int n = 70000;
+    auto file = [&](int quad_at, int bad_at, bool truncated) {
+        Bytes b;
+        b.text(header(Encoding::Little, "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                                        "element face " + std::to_string(n) + "\nproperty int id\n"
+                                        "property list uchar int vertex_indices\nproperty float w\n"));
+        for (const glm::vec3& p : kSquare) b.le(p.x).le(p.y).le(p.z);
+        for (int i = 0; i < n; ++i) {
+            b.le(int32_t(i));
+            if (i == quad_at)
+                b.le(uint8_t(4)).le(int32_t(0)).le(int32_t(1)).le(int32_t(2)).le(int32_t(3));
+            else
+                b.le(uint8_t(3)).le(int32_t(i % 4)).le(int32_t(i == bad_at ? 9 : (i + 1) % 4)).le(int32_t((i + 2) % 4));
+            b.le(0.5f);
+        }
+        std::string bytes = b.str();
+        if (truncated) bytes.resize(bytes.size() - 3);
+        return bytes;
+    };
+    for (unsigned threads : {1u, 2u, 3u}) {
+        set_thread_count(threads);
+        CAPTURE(threads);
+        const Mesh all = ply_from(file(-1, -1, false));
+        REQUIRE(all.face_count() == size_t(n));
+        size_t wrong = 0;
+        for (int i = 0; i < n; ++i) wrong += all.faces[size_t(i)] != Face(i % 4, (i + 1) % 4, (i + 2) % 4);
+        CHECK(wrong == 0);
+
+        const Mesh with_quad = ply_from(file(40000, -1, false));  // the quad: two triangles
+        REQUIRE(with_quad.face_count() == size_t(n + 1));
+        CHECK(with_quad.faces[40000] == Face(0, 1, 2));
+        CHECK(with_quad.faces[40001] == Face(0, 2, 3));
+        CHECK(with_quad.faces[40002] == Face(40001 % 4, 40002 % 4, 40003 % 4));
+
+        CHECK_THROWS_WITH(ply_from(file(-1, 50000, false)),
+                          Catch::Contains("face 50000 refers to vertex 9 but the file has 4 vertices"));
+        CHECK_THROWS_WITH(ply_from(file(-1, -1, true)), Catch::Contains("unexpected end of file"));
+    }
+    set_thread_count(0);
 }

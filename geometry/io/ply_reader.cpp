@@ -9,7 +9,10 @@
 #include "ply_sources.h"
 #include "prefault.h"
 
+#include "../parallel.h"
+
 #include <algorithm>
+#include <atomic>
 #include <limits>
 
 namespace kappa {
@@ -130,6 +133,39 @@ bool read_vertices_fast(const char*& pos, const char* end, const PlyElement& ele
     return true;
 }
 
+// The commonest face layout, every face a triangle of valid indices, as
+// fixed-size records (before + 13 + after bytes) read by all threads, each
+// a range of faces. False, with nothing read, at the first record that is
+// not so (or when the file is too short): the serial loop then reads them
+// all and names the problem.
+bool read_triangles_in_parallel(const char*& pos, const char* end, uint64_t count, size_t before, size_t after,
+                                uint64_t nv, std::vector<Face>& faces) {
+    const size_t stride = before + 13 + after;
+    if (count < 65536 || !faces.empty() || count > uint64_t(end - pos) / stride) return false;
+    const size_t n = size_t(count);
+    reserve_prefaulted(faces, n);
+    faces.resize(n);
+    std::atomic<bool> all_triangles{true};
+    const char* first = pos;
+    parallel_for_ranges(n, [&](size_t begin, size_t last) {
+        bool ok = true;
+        for (size_t i = begin; i < last && ok; ++i) {
+            const char* record = first + i * stride + before;
+            uint32_t v[3];
+            std::memcpy(v, record + 1, 12);
+            ok = uint8_t(record[0]) == 3 && v[0] < nv && v[1] < nv && v[2] < nv;
+            faces[i] = Face(v[0], v[1], v[2]);
+        }
+        if (!ok) all_triangles = false;
+    });
+    if (!all_triangles) {
+        faces.clear();
+        return false;
+    }
+    pos += n * stride;
+    return true;
+}
+
 // Fast path: faces made of scalars around one list with a one-byte count and
 // 32-bit indices, in host order; triangles are copied directly.
 bool read_faces_fast(const char*& pos, const char* end, const PlyElement& element, const ElementPlan& plan,
@@ -147,6 +183,7 @@ bool read_faces_fast(const char*& pos, const char* end, const PlyElement& elemen
     const bool signed_count = list.count_type == PlyType::Int8;
     const bool signed_index = list.type == PlyType::Int32;
     const uint64_t nv = ctx.vertex_count;
+    if (read_triangles_in_parallel(pos, end, element.count, before, after, nv, faces)) return true;
     // Room for the triangles the remaining bytes can hold (counts are not trusted).
     uint64_t triangles_left = uint64_t(end - pos) / (before + 13 + after);
     reserve_prefaulted(faces, faces.size() + size_t(std::min(element.count, triangles_left)));
