@@ -187,6 +187,14 @@ TEST_CASE("writers: errors name the path (missing directory, disk full, mismatch
     expect_write_error([&] { write_csv("/dev/full", s.mesh, s.fields); }, "/dev/full", "No space left");
     expect_write_error([&] { write_ply("/dev/full", s.mesh, s.fields, false); }, "/dev/full",
                        "No space left");
+    // Binary records are written by a helper thread when there are several
+    // workers (ply_writer.cpp): its failure must reach the caller the same way.
+    const Sample big = make_sample(100000);  // several 1 MiB chunks
+    for (unsigned threads : {1u, 2u, 3u}) {
+        set_thread_count(threads);
+        expect_write_error([&] { write_ply("/dev/full", big.mesh, big.fields); }, "/dev/full", "No space left");
+    }
+    set_thread_count(0);
 
     SurfaceFields short_fields = s.fields;
     short_fields.k2.pop_back();

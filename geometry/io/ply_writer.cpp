@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <exception>
+#include <thread>
 #include <vector>
 
 namespace kappa {
@@ -68,17 +70,41 @@ void append_number(std::string& out, uint32_t value) {
 
 // A binary block of `count` fixed-size records: format(i, out) writes
 // record i's `record_bytes` bytes. The worker threads fill a few 1 MiB
-// chunks at a time, which are then written in order (formatting was most of
-// the time of writing a binary PLY, the system call the least).
+// chunks at a time, which are written in order; with more than one worker,
+// a helper thread writes each batch while the workers fill the next (the
+// system call copies into the page cache on one thread only).
 template <typename Format>
 void write_records(OutputFile& file, size_t count, size_t record_bytes, const Format& format) {
     const size_t per_chunk = std::max<size_t>(1, kChunkBytes / record_bytes);
     const size_t chunks = (count + per_chunk - 1) / per_chunk;
-    std::vector<std::vector<char>> buffers(2 * size_t(thread_count()));
-    for (size_t first = 0; first < chunks; first += buffers.size()) {
-        const size_t batch = std::min(buffers.size(), chunks - first);
+    const bool overlap = thread_count() > 1;
+    using Batch = std::vector<std::vector<char>>;
+    Batch batches[2] = {Batch(2 * size_t(thread_count())), Batch(overlap ? 2 * size_t(thread_count()) : 0)};
+    const size_t per_batch = batches[0].size();
+    std::thread writer;
+    std::exception_ptr write_error;
+    const auto write_batch = [&file, &write_error](const Batch& batch, size_t n) {
+        try {
+            for (size_t k = 0; k < n; ++k) file.write(batch[k].data(), batch[k].size());
+        } catch (...) {
+            write_error = std::current_exception();
+        }
+    };
+    const auto finish_writing = [&] {
+        if (writer.joinable()) writer.join();
+        if (write_error) std::rethrow_exception(write_error);
+    };
+    struct Join {  // never leave the writer running (format may throw)
+        std::thread& thread;
+        ~Join() {
+            if (thread.joinable()) thread.join();
+        }
+    } join{writer};
+    for (size_t first = 0, b = 0; first < chunks; first += per_batch, b ^= size_t(overlap)) {
+        Batch& buffers = batches[b];
+        const size_t n = std::min(per_batch, chunks - first);
         parallel_for_ranges(
-            batch,
+            n,
             [&](size_t begin, size_t end) {
                 for (size_t k = begin; k < end; ++k) {
                     const size_t from = (first + k) * per_chunk, to = std::min(count, from + per_chunk);
@@ -87,8 +113,15 @@ void write_records(OutputFile& file, size_t count, size_t record_bytes, const Fo
                 }
             },
             1);
-        for (size_t k = 0; k < batch; ++k) file.write(buffers[k].data(), buffers[k].size());
+        finish_writing();  // the previous batch, written from the other set of buffers
+        if (overlap) {
+            writer = std::thread(write_batch, std::cref(buffers), n);
+        } else {
+            write_batch(buffers, n);
+            finish_writing();
+        }
     }
+    finish_writing();
 }
 
 // The 18 column values as little-endian floats, then the flags byte.
