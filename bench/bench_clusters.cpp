@@ -11,7 +11,7 @@
 #include "geometry/face_clusters.h"
 #include "geometry/face_geometry.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/normals.h"
+#include "geometry/vertex_basics.h"
 #include "geometry/vertex_faces.h"
 
 #include <glm/geometric.hpp>
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
                 mesh.face_count(), max_faces);
 
     const std::vector<glm::vec3> normals =
-        kappa::compute_vertex_normals(kappa::build_vertex_faces(mesh), kappa::compute_face_geometry(mesh));
+        kappa::compute_vertex_basics(kappa::build_vertex_faces(mesh), kappa::compute_face_geometry(mesh)).normals;
     const kappa::FaceClusters clusters = kappa::cluster_faces(mesh, max_faces);
     const std::vector<kappa::ClusterBounds> bounds = kappa::compute_cluster_bounds(mesh, normals, clusters);
     time_it("cluster_faces", runs, [&] { kappa::cluster_faces(mesh, max_faces); });

@@ -8,7 +8,7 @@
 
 #include "geometry/face_geometry.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/normals.h"
+#include "geometry/vertex_basics.h"
 #include "geometry/parallel.h"
 #include "geometry/scale/noise_level.h"
 #include "geometry/surface_analysis.h"
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     for (const std::string& path : paths) {
         const Mesh mesh = load_mesh(path);
         const VertexFaces vf = build_vertex_faces(mesh);
-        const std::vector<glm::vec3> normals = compute_vertex_normals(vf, compute_face_geometry(mesh));
+        const std::vector<glm::vec3> normals = compute_vertex_basics(vf, compute_face_geometry(mesh)).normals;
         SmoothingOptions automatic;
         automatic.automatic = true;
         const SurfaceFields f = compute_surface_fields(mesh, automatic);

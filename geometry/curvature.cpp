@@ -1,7 +1,6 @@
 #include "curvature.h"
 
 #include "double_lanes.h"
-#include "io/prefault.h"
 #include "ldlt.h"
 #include "parallel.h"
 
@@ -20,8 +19,8 @@ namespace {
 //  - each corner's vertex frame rotated into the face plane (frame_rotation).
 // Degenerate faces are stored unusable.
 template <typename D>
-KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, const FaceGeometry& faces, size_t first,
-               FaceFit* out) {
+KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>& normals, size_t first,
+                                  FaceRecord* out) {
     using namespace lanes;
     using F = FloatsFor<D>;
     // Degenerate faces are computed too (their records are stored all 0):
@@ -33,7 +32,7 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
     }
     const Vec3<D> e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j
     const Vec3<D> t = normalize(e[0]);
-    const Vec3<D> n = normalize(widen3<D>(load3<D>([&](int j) { return &faces.area_normals[first + j].x; })));
+    const Vec3<D> n = normalize(widen3<D>(load3<D>([&](int j) { return &out[j].fit[0]; })));  // the area normal
     const Vec3<D> b = cross(n, t);
     const Vec3<D> dn[3] = {vn[2] - vn[1], vn[0] - vn[2], vn[1] - vn[0]};
     D u[3], v[3], uu{}, uv{}, vv{}, m[3] = {};
@@ -58,9 +57,9 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
         tangent_frame<D>(vn[k], fu, fv);
         frame_rotation<D>(t, b, n, fu, vn[k], c[k], s[k]);
     }
-    // The records, lane j into out[j]: FaceFit's 16 floats in order, all 0
+    // The records, lane j into out[j]: FaceRecord's 16 floats in order, all 0
     // where the face is degenerate (corner areas all 0) or its fit failed.
-    const Vec3<F> w = load3<D>([&](int j) { return &faces.corner_areas[first + j].x; });
+    const Vec3<F> w = load3<D>([&](int j) { return &out[j].weights.x; });  // the corner areas
     const FloatMask<D> usable = narrow_mask<D>(ok) & ((w.x != 0.0f) | (w.y != 0.0f) | (w.z != 0.0f));
     const D h0 = 0.5 * (x[0] + x[2]), a2 = 0.5 * (x[0] - x[2]);  // tensor_harmonics of (x0, x1, x2)
     const F record[16] = {narrow<D>(h0),   narrow<D>(a2),   narrow<D>(x[1]), narrow<D>(u[0]),
@@ -77,14 +76,12 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
 }  // namespace
 
 VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
-                                        const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
-                                        FaceFits& fits) {
+                                        const std::vector<glm::vec3>& normals, FaceRecords& records) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-    fits = FaceFits(nf);
-    io::prefault(fits.data(), nf * sizeof(FaceFit));  // fresh memory: mapped by all threads at once
+    FaceRecords& fits = records;  // each face's fit written over its geometry
     parallel_for_ranges(nf, [&](size_t first, size_t last) {
         lanes::for_each_group(first, last, [&](auto lanes, size_t i) KAPPA_LANES_LAMBDA {
-            fit_faces<decltype(lanes)>(mesh, normals, faces, i, &fits[i]);
+            fit_faces<decltype(lanes)>(mesh, normals, i, &fits[i]);
         });
     });
 

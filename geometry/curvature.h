@@ -12,6 +12,7 @@
 #pragma once
 
 #include "face_geometry.h"
+#include "face_record.h"
 #include "mesh.h"
 #include "prefetch.h"
 #include "tensor_frames.h"
@@ -25,44 +26,17 @@
 
 namespace kappa {
 
-// What the curvature step learns about a face, with everything the two
-// vertex steps gather from it in one cache line: they visit a vertex's
-// faces in face order, scattered over memory, so one line a face, not one
-// per array (those loads were most of their time).
-struct alignas(64) FaceFit {
-    // II fitted in the face frame (t, b) (t along the edge from corner 1 to
-    // corner 2, t x b the face normal; the frame itself is not kept:
-    // everything later is relative to it), as its harmonics (h0, a2, b2)
-    // (tensor_frames.h), then the edges in (t, b): e_0 = (x, 0), e_1 =
-    // (y, z), e_2 = -e_0 - e_1 (e_j opposite corner j). Once the face's C is
-    // fitted (dcurvature.h), C's harmonics (a1, b1, a3, b3) take their place.
-    float fit[6];
-    // Mixed-Voronoi corner areas, the averaging weights; all 0 where the face
-    // is not usable (degenerate, or a fit failed).
-    glm::vec3 weights;
-    // Each corner's vertex frame (tangent_frame of its normal) rotated into
-    // the face's plane (sec. 3.3), as a rotation from (t, b).
-    FrameRotation corners[3];
-
-    bool usable() const { return weights != glm::vec3(0.0f); }
-};
-static_assert(sizeof(FaceFit) == 64, "FaceFit: one cache line");
-static_assert(offsetof(FaceFit, weights) == 6 * sizeof(float) && offsetof(FaceFit, corners) == 9 * sizeof(float),
-              "FaceFit: 16 floats in order (the face steps store them as such)");
-
-using FaceFits = UninitializedArray<FaceFit>;  // filled by compute_curvature_tensors
-
 // Adds w * turned(fit, rotation) to `sum` over vertex v's usable faces, w the
 // corner's weight and rotation its frame rotation, in face order; returns
 // the sum of the weights. The gather of both vertex steps; `turned` gives
 // four float lanes (tensor_frames.h's turn_*_harmonics).
 template <typename Turned>
-float add_face_values(const VertexFaces& vf, const FaceFits& fits, size_t v, lanes::Lanes& sum, const Turned& turned) {
+float add_face_values(const VertexFaces& vf, const FaceRecords& fits, size_t v, lanes::Lanes& sum, const Turned& turned) {
     float wsum = 0;
     for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) {
         const uint32_t c = vf.corners[k];
         prefetch_face_ahead(vf, k, fits.data());
-        const FaceFit& fit = fits[c / 3];
+        const FaceRecord& fit = fits[c / 3];
         const float w = fit.weights[c % 3];
         if (!(w > 0)) continue;
         lanes::Lanes values;
@@ -80,10 +54,11 @@ struct VertexTensors {
     std::vector<Tensor2> tensor;
 };
 
-// Steps 1 to 3 up to the averaged tensors. `normals` are unit length.
+// Steps 1 to 3 up to the averaged tensors. `normals` are unit length;
+// `records` hold the faces' geometry on entry (compute_face_geometry) and
+// their fits on return (face_record.h: phase 2), for compute_dcurv.
 VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
-                                        const std::vector<glm::vec3>& normals, const FaceGeometry& faces,
-                                        FaceFits& fits);
+                                        const std::vector<glm::vec3>& normals, FaceRecords& records);
 
 // Diagonalisation: k1 >= k2 and the first principal direction d1.
 void principal_curvatures(const VertexTensors& tensors, const std::vector<glm::vec3>& normals, std::vector<float>& k1,

@@ -11,7 +11,7 @@ namespace kappa {
 namespace {
 
 // C on faces first .. first + L - 1, L the lanes of D (double_lanes.h),
-// replacing their fits (FaceFit::fit); faces whose fit fails get weight 0.
+// replacing their fits (FaceRecord::fit); faces whose fit fails get weight 0.
 // The vertices' tensors are turned into the face frame by the inverse
 // (transposed) corner rotation, then C is fitted to their differences along
 // the edges, the kuv equation counted twice (kuv appears twice in the
@@ -21,10 +21,10 @@ namespace {
 // what is stored back) and their indices valid.
 template <typename D>
 KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tensor2>& tensors, size_t first,
-                                        FaceFit* fits) {
+                                        FaceRecord* fits) {
     using namespace lanes;
     using F = FloatsFor<D>;
-    const auto record = [&](int j) { return reinterpret_cast<const float*>(&fits[j]); };  // FaceFit's 16 floats
+    const auto record = [&](int j) { return reinterpret_cast<const float*>(&fits[j]); };  // FaceRecord's 16 floats
     const Vec3<D> edges = widen3<D>(load3<D>([&](int j) { return record(j) + 3; }));
     const D u[3] = {edges.x, edges.y, -edges.x - edges.y}, v[3] = {D{}, edges.z, -edges.z};
     D ku[3], kuv[3], kv[3];  // the corners' tensors in the face frame
@@ -71,7 +71,7 @@ KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tens
 
 }  // namespace
 
-std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceFits fits,
+std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceRecords fits,
                                      const std::vector<glm::vec3>& normals, VertexTensors tensors,
                                      const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();

@@ -19,7 +19,7 @@ namespace kappa {
 // the fits' corner areas. Returns (a, b, c, d) = (C111, C112, C122, C222) in each
 // vertex's (d1, d2). Takes `fits` and `tensors` over (std::move them in):
 // what the last pass does not need is freed before it allocates its output.
-std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceFits fits,
+std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, FaceRecords fits,
                                      const std::vector<glm::vec3>& normals, VertexTensors tensors,
                                      const std::vector<glm::vec3>& d1);
 

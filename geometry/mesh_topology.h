@@ -64,6 +64,6 @@ struct Components {
 
 Components find_components(const Mesh& mesh);
 
-// Per-vertex boundary / non-manifold flags: compute_vertex_flags (vertex_flags.h).
+// Per-vertex boundary / non-manifold flags: compute_vertex_basics (vertex_basics.h).
 
 }  // namespace kappa

@@ -4,12 +4,11 @@
 #include "curvature/estimate.h"
 #include "dcurvature.h"
 #include "face_geometry.h"
-#include "normals.h"
 #include "scale/auto_smoothing.h"
 #include "smoothing.h"
 #include "vertex_faces.h"
 #include "vertex_flags.h"
-#include "voronoi_areas.h"
+#include "vertex_basics.h"
 
 #include "parallel.h"
 
@@ -67,9 +66,8 @@ void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces
         if (e.dcurv_uv.empty()) {
             // The paper's C step (sec. 3.4) on the estimator's tensors; it
             // needs the face frames of the paper's curvature step.
-            FaceFits fits;
-            compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
-            out.dcurv = compute_dcurv(mesh, vf, std::move(fits), out.normals, std::move(e.tensors),
+            compute_curvature_tensors(mesh, vf, out.normals, faces.records);
+            out.dcurv = compute_dcurv(mesh, vf, std::move(faces.records), out.normals, std::move(e.tensors),
                                       out.d1);
         } else {
             out.dcurv.resize(out.normals.size());
@@ -112,15 +110,15 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
     {
         StageTimer timer(&t.areas);
         faces = compute_face_geometry(mesh);
-        out.point_areas = compute_point_areas(vf, faces.corner_areas);
-        out.flags = compute_vertex_flags(mesh, vf, out.point_areas);
     }
 
     report(0.2f, "normals");
     {
-        StageTimer timer(&t.normals);
-        out.normals = compute_vertex_normals(vf, faces);
-        std::vector<glm::vec3>().swap(faces.inv_edge_len2);  // only normals need it: free it early
+        StageTimer timer(&t.normals);  // with the point areas and the flags, in the same pass
+        VertexBasics basics = compute_vertex_basics(vf, faces);
+        out.point_areas = std::move(basics.point_areas);
+        out.flags = std::move(basics.flags);
+        out.normals = std::move(basics.normals);
     }
     out.smoothing = requested;
     if (requested.automatic) {
@@ -152,13 +150,10 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
     }
 
     report(0.35f, "curvature");
-    FaceFits fits;
     VertexTensors tensors;
     {
         StageTimer timer(&t.curvature);
-        tensors = compute_curvature_tensors(mesh, vf, out.normals, faces, fits);
-        std::vector<glm::vec3>().swap(faces.area_normals);  // the fits hold what is needed from here on
-        std::vector<glm::vec3>().swap(faces.corner_areas);
+        tensors = compute_curvature_tensors(mesh, vf, out.normals, faces.records);  // the records now hold the fits
     }
     if (smoothing.curvature > 0) {
         report(0.5f, "smoothing curvature");
@@ -173,7 +168,7 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
     report(0.65f, "derivative of curvature");
     {
         StageTimer timer(&t.dcurv);
-        out.dcurv = compute_dcurv(mesh, vf, std::move(fits), out.normals, std::move(tensors), out.d1);
+        out.dcurv = compute_dcurv(mesh, vf, std::move(faces.records), out.normals, std::move(tensors), out.d1);
         out.d2 = second_principal_directions(out.normals, out.d1);
     }
     if (smoothing.dcurv > 0) {

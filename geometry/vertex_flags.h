@@ -1,5 +1,6 @@
 // Per-vertex reliability flags. A flagged vertex still gets finite values
-// (never NaN or inf); the flag says why they should not be trusted.
+// (never NaN or inf); the flag says why they should not be trusted. The
+// first four are set by compute_vertex_basics (vertex_basics.h).
 #pragma once
 
 #include <cstdint>
@@ -18,21 +19,5 @@ enum VertexFlag : uint8_t {
 // Bits that make a curvature estimate unreliable (everything above).
 constexpr uint8_t kFlagUnreliable =
     kFlagIsolated | kFlagDegenerate | kFlagBoundary | kFlagNonManifold | kFlagFallback;
-
-}  // namespace kappa
-
-#include "mesh.h"
-#include "vertex_faces.h"
-
-#include <vector>
-
-namespace kappa {
-
-// Flags every vertex from its one-ring alone (so it is parallel and needs no
-// global edge table): isolated (no face), degenerate (zero Voronoi area),
-// boundary (an edge at the vertex used by one face), non-manifold (an edge
-// used by three or more faces).
-std::vector<uint8_t> compute_vertex_flags(const Mesh& mesh, const VertexFaces& vf,
-                                          const std::vector<float>& point_areas);
 
 }  // namespace kappa

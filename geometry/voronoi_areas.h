@@ -5,7 +5,6 @@
 #pragma once
 
 #include "double_lanes.h"
-#include "vertex_faces.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -40,8 +39,5 @@ inline glm::dvec3 mixed_voronoi_corner_areas(const glm::dvec3 (&e)[3], double ar
     const lanes::Vec3<double> out = mixed_voronoi_corner_areas<double>(v, area);
     return {out.x, out.y, out.z};
 }
-
-// Per vertex, the sum of its corner areas.
-std::vector<float> compute_point_areas(const VertexFaces& vf, const std::vector<glm::vec3>& corner_areas);
 
 }  // namespace kappa

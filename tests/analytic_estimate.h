@@ -7,7 +7,7 @@
 
 #include "geometry/curvature/estimate.h"
 #include "geometry/face_geometry.h"
-#include "geometry/normals.h"
+#include "geometry/vertex_basics.h"
 #include "geometry/vertex_faces.h"
 #include "geometry/voronoi_areas.h"
 
@@ -26,8 +26,9 @@ struct EstimatorInputs {
 
 inline EstimatorInputs estimator_inputs(const Mesh& m) {
     EstimatorInputs in{build_vertex_faces(m), compute_face_geometry(m), {}, {}};
-    in.normals = compute_vertex_normals(in.vf, in.faces);
-    in.areas = compute_point_areas(in.vf, in.faces.corner_areas);
+    VertexBasics basics = compute_vertex_basics(in.vf, in.faces);
+    in.normals = std::move(basics.normals);
+    in.areas = std::move(basics.point_areas);
     return in;
 }
 

@@ -1,6 +1,6 @@
 // Curvature, normals and areas against analytic surfaces.
 #include "geometry/curvature.h"
-#include "geometry/normals.h"
+#include "geometry/vertex_basics.h"
 #include "geometry/primitives.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/vertex_flags.h"
@@ -93,7 +93,7 @@ TEST_CASE("Max's normals are exact on spheres of any tessellation", "[normals]")
         // Float positions are off the sphere by ~eps R; over edges of length h that tilts
         // normals by ~eps R / h.
         const double R = 2.0, tol = 4 * 1.2e-7 * R / mean_edge(m);
-        const auto n = compute_vertex_normals(build_vertex_faces(m), compute_face_geometry(m));
+        const auto n = compute_vertex_basics(build_vertex_faces(m), compute_face_geometry(m)).normals;
         for (size_t i = 0; i < m.positions.size(); ++i)
             REQUIRE(glm::length(n[i] - glm::normalize(m.positions[i])) < tol);
     }
@@ -102,13 +102,14 @@ TEST_CASE("Max's normals are exact on spheres of any tessellation", "[normals]")
 TEST_CASE("Mixed Voronoi areas partition the surface", "[areas]") {
     for (const Mesh& m : {make_icosphere(1.0f, 3), make_uv_sphere(1.0f, 20, 40),
                           make_jittered_sphere(1.0f, 3, 0.9f, 2), make_torus(1.0f, 0.3f, 40, 16)}) {
-        const auto corner = compute_face_geometry(m).corner_areas;
+        const FaceGeometry faces = compute_face_geometry(m);
         double sum = 0;
-        for (size_t f = 0; f < corner.size(); ++f) {
-            REQUIRE(corner[f].x >= 0);
-            REQUIRE(corner[f].y >= 0);
-            REQUIRE(corner[f].z >= 0);
-            sum += double(corner[f].x) + corner[f].y + corner[f].z;
+        for (size_t f = 0; f < faces.size(); ++f) {
+            const glm::vec3 corner = faces.corner_areas(f);
+            REQUIRE(corner.x >= 0);
+            REQUIRE(corner.y >= 0);
+            REQUIRE(corner.z >= 0);
+            sum += double(corner.x) + corner.y + corner.z;
         }
         CHECK(sum == Approx(mesh_area(m)).epsilon(1e-6));
     }
@@ -118,7 +119,7 @@ TEST_CASE("Mixed Voronoi areas follow Meyer's rules on single triangles", "[area
     Mesh right;  // right angle at corner 0: the circumcentre is the hypotenuse midpoint
     right.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
     right.faces = {{0, 1, 2}};
-    auto a = compute_face_geometry(right).corner_areas[0];
+    auto a = compute_face_geometry(right).corner_areas(0);
     // Area 2: Voronoi gives corner 0 the square [0,1]^2 = 1, corners 1 and 2 half of the rest each.
     CHECK(a.x == Approx(1.0));
     CHECK(a.y == Approx(0.5));
@@ -127,7 +128,7 @@ TEST_CASE("Mixed Voronoi areas follow Meyer's rules on single triangles", "[area
     Mesh obtuse;  // obtuse at corner 2
     obtuse.positions = {{0, 0, 0}, {4, 0, 0}, {2, 0.5f, 0}};
     obtuse.faces = {{0, 1, 2}};
-    a = compute_face_geometry(obtuse).corner_areas[0];  // area 1
+    a = compute_face_geometry(obtuse).corner_areas(0);  // area 1
     CHECK(a.x == Approx(0.25));
     CHECK(a.y == Approx(0.25));
     CHECK(a.z == Approx(0.5));
@@ -135,7 +136,7 @@ TEST_CASE("Mixed Voronoi areas follow Meyer's rules on single triangles", "[area
     Mesh equilateral;
     equilateral.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, std::sqrt(3.0f) / 2, 0}};
     equilateral.faces = {{0, 1, 2}};
-    a = compute_face_geometry(equilateral).corner_areas[0];
+    a = compute_face_geometry(equilateral).corner_areas(0);
     CHECK(a.x == Approx(std::sqrt(3.0) / 12).epsilon(1e-6));
     CHECK(a.y == Approx(std::sqrt(3.0) / 12).epsilon(1e-6));
 }

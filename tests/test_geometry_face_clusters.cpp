@@ -9,7 +9,7 @@
 #include "geometry/face_clusters.h"
 #include "geometry/face_geometry.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/normals.h"
+#include "geometry/vertex_basics.h"
 #include "geometry/primitives.h"
 #include "geometry/vertex_faces.h"
 
@@ -25,7 +25,7 @@ using namespace kappa;
 namespace {
 
 std::vector<glm::vec3> normals_of(const Mesh& m) {
-    return compute_vertex_normals(build_vertex_faces(m), compute_face_geometry(m));
+    return compute_vertex_basics(build_vertex_faces(m), compute_face_geometry(m)).normals;
 }
 
 // Appends b to a (indices shifted).
@@ -407,7 +407,7 @@ TEST_CASE("face clusters and bounds on degenerate meshes", "[geometry][clusters]
             for (float v : values) CHECK(std::isfinite(v));
             CHECK(b.radius >= 0);
         }
-        // The vertices of the zero-area face have zero normals (normals.h): its
+        // The vertices of the zero-area face have zero normals (vertex_basics.h): its
         // cluster is "all directions".
         for (size_t c = 0; c < cl.size(); ++c)
             for (uint32_t i = cl.cluster_start[c]; i < cl.cluster_start[c + 1]; ++i)

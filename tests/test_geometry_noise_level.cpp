@@ -6,7 +6,7 @@
 #include "analytic_curvature.h"
 
 #include "geometry/face_geometry.h"
-#include "geometry/normals.h"
+#include "geometry/vertex_basics.h"
 #include "geometry/parallel.h"
 #include "geometry/primitives.h"
 #include "geometry/scale/noise_level.h"
@@ -21,7 +21,7 @@ namespace {
 NoiseLevel estimate(const Mesh& m) {
     const VertexFaces vf = build_vertex_faces(m);
     const FaceGeometry faces = compute_face_geometry(m);
-    return estimate_noise_level(m, vf, compute_vertex_normals(vf, faces));
+    return estimate_noise_level(m, vf, compute_vertex_basics(vf, faces).normals);
 }
 
 }  // namespace

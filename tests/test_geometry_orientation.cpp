@@ -7,7 +7,7 @@
 
 #include "geometry/back_faces.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/normals.h"
+#include "geometry/vertex_basics.h"
 #include "geometry/orientation.h"
 #include "geometry/primitives.h"
 #include "geometry/vertex_faces.h"
@@ -38,7 +38,7 @@ TEST_CASE("inside-out meshes are recognised, outward and open ones are not", "[g
 
 TEST_CASE("flipping faces turns every vertex normal round", "[geometry][orientation]") {
     Mesh sphere = make_icosphere(1.0f, 2);
-    auto normals = [](const Mesh& m) { return compute_vertex_normals(build_vertex_faces(m), compute_face_geometry(m)); };
+    auto normals = [](const Mesh& m) { return compute_vertex_basics(build_vertex_faces(m), compute_face_geometry(m)).normals; };
     const std::vector<glm::vec3> before = normals(sphere);
     flip_faces(sphere);
     const std::vector<glm::vec3> after = normals(sphere);

@@ -10,7 +10,7 @@
 #include "geometry/primitives.h"
 #include "geometry/face_geometry.h"
 #include "geometry/vertex_flags.h"
-#include "geometry/voronoi_areas.h"
+#include "geometry/vertex_basics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ Topology topology_of(const Mesh& m) { return analyze_topology(m, build_edge_tabl
 // The per-vertex flags the curvature pipeline computes (from one-rings only).
 std::vector<uint8_t> vertex_flags_of(const Mesh& m) {
     const VertexFaces vf = build_vertex_faces(m);
-    return compute_vertex_flags(m, vf, compute_point_areas(vf, compute_face_geometry(m).corner_areas));
+    return compute_vertex_basics(vf, compute_face_geometry(m)).flags;
 }
 
 // Appends b to a (indices shifted).
@@ -117,7 +117,7 @@ TEST_CASE("grid: one boundary loop of 4n edges, chi = 1", "[topology]") {
 }
 
 TEST_CASE("one-ring vertex flags agree with the global edge table", "[topology]") {
-    // Two independent computations: compute_vertex_flags looks at each vertex's fan only, the
+    // Two independent computations: compute_vertex_basics looks at each vertex's fan only, the
     // edge table counts the faces of every edge. A vertex is boundary (non-manifold) exactly when
     // it ends an edge used by one face (by three or more).
     Mesh m = make_grid(1.0f, 6);

@@ -28,7 +28,7 @@ int64_t face_across(const Mesh& mesh, const VertexFaces& vf, uint32_t at, uint32
 void add_edge(const EstimatorInput& in, uint32_t a, uint32_t b, uint32_t f, double weight, glm::dmat3& T) {
     const int64_t g = face_across(in.mesh, in.vf, a, b, f);
     if (g < 0) return;
-    const glm::dvec3 nf(in.faces.area_normals[f]), ng(in.faces.area_normals[size_t(g)]);
+    const glm::dvec3 nf(in.faces.area_normal(f)), ng(in.faces.area_normal(size_t(g)));
     const double lf = glm::length(nf), lg = glm::length(ng);
     if (!(lf > 0) || !(lg > 0)) return;
     const glm::dvec3 d = glm::dvec3(in.mesh.positions[b]) - glm::dvec3(in.mesh.positions[a]);
@@ -52,7 +52,7 @@ CurvatureEstimate estimate_tensor_averaging(const EstimatorInput& in) {
             const uint32_t c = in.vf.corners[k], f = c / 3;
             const Face& face = in.mesh.faces[f];
             const uint32_t a = face[(c + 1) % 3], b = face[(c + 2) % 3];
-            area += 0.5 * glm::length(glm::dvec3(in.faces.area_normals[f]));
+            area += 0.5 * glm::length(glm::dvec3(in.faces.area_normal(f)));
             add_edge(in, uint32_t(v), a, f, 1.0, T);  // spoke v -> a; v <- b is b's face's spoke
             add_edge(in, a, b, f, 0.5, T);            // rim edge, on the border of B
         }
