@@ -10,7 +10,9 @@
 
 namespace kappa {
 
-// Wall-clock seconds spent in each stage.
+// Wall-clock seconds spent in each stage: areas is the face geometry
+// (face_geometry.h), normals the per-vertex pass that also sums the point
+// areas and sets the flags (vertex_basics.h).
 struct StageTimes {
     double adjacency = 0, normals = 0, areas = 0, curvature = 0, dcurv = 0, smoothing = 0;
     double total() const { return adjacency + normals + areas + curvature + dcurv + smoothing; }
