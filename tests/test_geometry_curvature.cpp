@@ -269,6 +269,8 @@ TEST_CASE("curvature fields are the same bits for any thread count", "[curvature
         CHECK(std::memcmp(one.k2.data(), other.k2.data(), one.k2.size() * sizeof(float)) == 0);
         CHECK(std::memcmp(one.d1.data(), other.d1.data(), one.d1.size() * sizeof(glm::vec3)) == 0);
         CHECK(std::memcmp(one.dcurv.data(), other.dcurv.data(), one.dcurv.size() * sizeof(glm::vec4)) == 0);
+        CHECK(one.flags == other.flags);
+        CHECK(std::memcmp(one.normals.data(), other.normals.data(), one.normals.size() * sizeof(glm::vec3)) == 0);
     }
     set_thread_count(0);
 }
@@ -283,5 +285,9 @@ TEST_CASE("curvature fields are the same bits with and without AVX2", "[curvatur
     const SurfaceFields widest = compute_surface_fields(bunny, {});
     CHECK(std::memcmp(baseline.k1.data(), widest.k1.data(), baseline.k1.size() * sizeof(float)) == 0);
     CHECK(std::memcmp(baseline.d1.data(), widest.d1.data(), baseline.d1.size() * sizeof(glm::vec3)) == 0);
+    // The face records also carry the vertex indices the flags come from.
+    CHECK(baseline.flags == widest.flags);
+    CHECK(std::memcmp(baseline.normals.data(), widest.normals.data(), baseline.normals.size() * sizeof(glm::vec3)) == 0);
+    CHECK(std::memcmp(baseline.point_areas.data(), widest.point_areas.data(), baseline.point_areas.size() * sizeof(float)) == 0);
     CHECK(std::memcmp(baseline.dcurv.data(), widest.dcurv.data(), baseline.dcurv.size() * sizeof(glm::vec4)) == 0);
 }
