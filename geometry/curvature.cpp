@@ -79,7 +79,7 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
                                         const std::vector<glm::vec3>& normals, FaceRecords& records) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     FaceRecords& fits = records;  // each face's fit written over its geometry
-    parallel_for_ranges(nf, [&](size_t first, size_t last) {
+    parallel_for_chunks(nf, [&](size_t first, size_t last) {
         lanes::for_each_group(first, last, [&](auto lanes, size_t i) KAPPA_LANES_LAMBDA {
             fit_faces<decltype(lanes)>(mesh, normals, i, &fits[i]);
         });
@@ -87,7 +87,7 @@ VertexTensors compute_curvature_tensors(const Mesh& mesh, const VertexFaces& vf,
 
     VertexTensors out;
     out.tensor.resize(nv);
-    parallel_for(nv, [&](size_t vi) {
+    parallel_for_chunked(nv, [&](size_t vi) {
         // Summed as harmonics (tensor_frames.h) in the vertex frame.
         lanes::Lanes sum{};
         const float wsum = add_face_values(vf, fits, vi, sum, [](lanes::Lanes fit, const FrameRotation& r) {

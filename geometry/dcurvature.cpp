@@ -75,7 +75,7 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
                                      const std::vector<glm::vec3>& normals, VertexTensors tensors,
                                      const std::vector<glm::vec3>& d1) {
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
-    parallel_for_ranges(nf, [&](size_t first, size_t last) {
+    parallel_for_chunks(nf, [&](size_t first, size_t last) {
         lanes::for_each_group(first, last, [&](auto lanes, size_t i) KAPPA_LANES_LAMBDA {
             fit_dcurv_faces<decltype(lanes)>(mesh, tensors.tensor, i, &fits[i]);
         });
@@ -83,7 +83,7 @@ std::vector<glm::vec4> compute_dcurv(const Mesh& mesh, const VertexFaces& vf, Fa
     std::vector<Tensor2>().swap(tensors.tensor);
 
     std::vector<glm::vec4> dcurv(nv, glm::vec4(0.0f));
-    parallel_for(nv, [&](size_t vi) {
+    parallel_for_chunked(nv, [&](size_t vi) {
         // Average in the vertex frame (u, v), as harmonics (tensor_frames.h),
         // then turn the (linear) result into the principal frame.
         lanes::Lanes sum{};

@@ -64,7 +64,7 @@ FaceGeometry compute_face_geometry(const Mesh& mesh) {
     FaceGeometry g;
     g.records = FaceRecords(nf);
     io::prefault(g.records.data(), nf * sizeof(FaceRecord));  // fresh memory: mapped by all threads at once
-    parallel_for_ranges(nf, [&](size_t first, size_t last) {
+    parallel_for_chunks(nf, [&](size_t first, size_t last) {
         lanes::for_each_group(first, last, [&](auto lanes, size_t i) KAPPA_LANES_LAMBDA {
             face_geometry<decltype(lanes)>(mesh, i, &g.records[i]);
         });

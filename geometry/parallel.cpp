@@ -39,6 +39,26 @@ void parallel_for_ranges(size_t n, const std::function<void(size_t, size_t)>& bo
     for (auto& w : workers) w.join();
 }
 
+void parallel_for_chunks(size_t n, const std::function<void(size_t, size_t)>& body, size_t chunk) {
+    if (n == 0) return;
+    chunk = std::max<size_t>(chunk, 1);
+    const size_t chunks = (n + chunk - 1) / chunk;
+    const size_t threads = std::min<size_t>(thread_count(), chunks);
+    if (threads <= 1) {
+        body(0, n);
+        return;
+    }
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+        for (size_t c = next++; c < chunks; c = next++) body(c * chunk, std::min(n, (c + 1) * chunk));
+    };
+    std::vector<std::thread> workers;
+    workers.reserve(threads - 1);
+    for (size_t t = 1; t < threads; ++t) workers.emplace_back(work);
+    work();
+    for (auto& w : workers) w.join();
+}
+
 void parallel_for_dynamic(size_t n, const std::function<void(size_t)>& body) {
     const size_t threads = std::min<size_t>(thread_count(), n);
     if (threads <= 1) {

@@ -18,11 +18,27 @@ unsigned thread_count();
 void parallel_for_ranges(size_t n, const std::function<void(size_t, size_t)>& body,
                          size_t min_chunk = 4096);
 
+// Calls body(begin, end) on consecutive chunks of about `chunk` indices
+// covering [0, n), handed to whichever worker is free: a pass whose
+// threads would otherwise wait for the slowest of fixed halves (a core
+// the VM lends elsewhere for a moment, a range of costlier items) keeps
+// them all busy to the end. As parallel_for_ranges, each index is
+// computed by one thread writing only its own outputs, so results never
+// depend on the thread count; bodies must not assume one range a thread.
+void parallel_for_chunks(size_t n, const std::function<void(size_t, size_t)>& body, size_t chunk = 16384);
+
 // Calls body(i) for every i in [0, n).
 template <typename Body>
 void parallel_for(size_t n, Body&& body, size_t min_chunk = 4096) {
     parallel_for_ranges(
         n, [&](size_t b, size_t e) { for (size_t i = b; i < e; ++i) body(i); }, min_chunk);
+}
+
+// Calls body(i) for every i in [0, n), over parallel_for_chunks.
+template <typename Body>
+void parallel_for_chunked(size_t n, Body&& body, size_t chunk = 16384) {
+    parallel_for_chunks(
+        n, [&](size_t b, size_t e) { for (size_t i = b; i < e; ++i) body(i); }, chunk);
 }
 
 // Calls body(i) for every i in [0, n), handing out one index at a time to

@@ -81,7 +81,7 @@ VertexBasics compute_vertex_basics(const VertexFaces& vf, const FaceGeometry& fa
     out.point_areas.resize(nv);
     out.flags.resize(nv);
     out.normals.resize(nv);
-    parallel_for_ranges(nv, [&](size_t first, size_t last) {
+    parallel_for_chunks(nv, [&](size_t first, size_t last) {
         std::vector<uint32_t> forward, backward, ends;
         for (size_t v = first; v < last; ++v) {
             const size_t d = vf.degree(v);
