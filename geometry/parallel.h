@@ -25,6 +25,7 @@ void parallel_for_ranges(size_t n, const std::function<void(size_t, size_t)>& bo
 // them all busy to the end. As parallel_for_ranges, each index is
 // computed by one thread writing only its own outputs, so results never
 // depend on the thread count; bodies must not assume one range a thread.
+// With one worker (or one chunk), a single call for all of [0, n).
 void parallel_for_chunks(size_t n, const std::function<void(size_t, size_t)>& body, size_t chunk = 16384);
 
 // Calls body(i) for every i in [0, n).

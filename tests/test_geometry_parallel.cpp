@@ -1,0 +1,58 @@
+// The parallel loops every pass is built on: each index once, whatever the
+// thread count and the split.
+#include "geometry/parallel.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <vector>
+
+using namespace kappa;
+
+namespace {
+
+// How many times each index of [0, n) was visited by `loop`.
+template <typename Loop>
+std::vector<int> visits(size_t n, const Loop& loop) {
+    std::vector<std::atomic<int>> count(n);
+    loop([&](size_t i) { ++count[i]; });
+    std::vector<int> out(n);
+    for (size_t i = 0; i < n; ++i) out[i] = count[i];
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("parallel loops visit every index exactly once", "[parallel]") {
+    for (unsigned threads : {1u, 2u, 3u, 8u}) {
+        set_thread_count(threads);
+        for (size_t n : {size_t(0), size_t(1), size_t(7), size_t(4096), size_t(100003)}) {
+            for (size_t chunk : {size_t(1), size_t(1000), size_t(16384), size_t(1) << 20}) {
+                CAPTURE(threads, n, chunk);
+                std::atomic<size_t> ranges_wrong{0};
+                const auto counts = visits(n, [&](auto visit) {
+                    parallel_for_chunks(
+                        n,
+                        [&](size_t b, size_t e) {
+                            // Non-empty, in range, at most a chunk (one call for all with one thread).
+                            ranges_wrong += b >= e || e > n || (threads > 1 && e - b > chunk);
+                            for (size_t i = b; i < e; ++i) visit(i);
+                        },
+                        chunk);
+                });
+                CHECK(std::count(counts.begin(), counts.end(), 1) == std::ptrdiff_t(n));
+                CHECK(ranges_wrong == 0);
+            }
+            const auto ranges = visits(n, [&](auto visit) {
+                parallel_for_ranges(n, [&](size_t b, size_t e) {
+                    for (size_t i = b; i < e; ++i) visit(i);
+                });
+            });
+            CHECK(std::count(ranges.begin(), ranges.end(), 1) == std::ptrdiff_t(n));
+            const auto chunked = visits(n, [&](auto visit) { parallel_for_chunked(n, visit, 100); });
+            CHECK(std::count(chunked.begin(), chunked.end(), 1) == std::ptrdiff_t(n));
+        }
+    }
+    set_thread_count(0);
+}
