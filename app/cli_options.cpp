@@ -1,7 +1,7 @@
 #include "cli_options.h"
 
 #include "geometry/surface_analysis.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 #include <charconv>

@@ -5,11 +5,11 @@
 #include "mesh_source.h"
 #include "progress_bar.h"
 
-#include "geometry/feature_size.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/io/output_file.h"
 #include "geometry/surface_analysis.h"
-#include "geometry/vertex_flags.h"
+#include "geometry/curvature/vertex_flags.h"
 
 #include <algorithm>
 #include <optional>

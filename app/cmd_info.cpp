@@ -5,8 +5,8 @@
 #include "mesh_source.h"
 #include "progress_bar.h"
 
-#include "geometry/feature_size.h"
-#include "geometry/mesh_stats.h"
+#include "geometry/curvature/feature_size.h"
+#include "geometry/mesh/mesh_stats.h"
 #include "geometry/surface_analysis.h"
 
 #include <chrono>

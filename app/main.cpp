@@ -3,7 +3,7 @@
 #include "cli_options.h"
 #include "commands.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <cstring>
 #include <exception>

@@ -3,7 +3,7 @@
 #include "mesh_source.h"
 #include "render_options.h"
 
-#include "geometry/feature_size.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/lines/line_extraction.h"
 #include "render/field_upload.h"
 #include "render/image_writer.h"

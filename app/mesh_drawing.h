@@ -1,13 +1,13 @@
 // One mesh prepared for drawing, and its views: what `kappa render`, each
 // mesh of `kappa batch` and the Python module's render() and strokes() share.
-// The mesh is split at its sharp edges (geometry/creases.h), its fields are
+// The mesh is split at its sharp edges (geometry/mesh/creases.h), its fields are
 // computed once (with --detail: the scale space, and per view the fields at
 // the view's scale, render/detail_fields.h), uploaded on the first view and
 // updated per view when they follow the view.
 #pragma once
 
-#include "geometry/creases.h"
-#include "geometry/drawing_units.h"
+#include "geometry/mesh/creases.h"
+#include "geometry/mesh/drawing_units.h"
 #include "geometry/surface_analysis.h"
 #include "render/camera.h"
 #include "render/detail_fields.h"
@@ -32,12 +32,12 @@ public:
     MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
                 const ProgressFn& progress = {});
 
-    // The mesh as drawn, and its bounds: in drawing units (geometry/drawing_units.h), which are the
+    // The mesh as drawn, and its bounds: in drawing units (geometry/mesh/drawing_units.h), which are the
     // model's own but for meshes far from unit size; cameras are in the same units (make_camera).
     const Mesh& mesh() const { return drawn_.mesh; }
     const render::BoundingSphere& bounds() const { return bounds_; }
     const DrawingUnits& units() const { return units_; }
-    // Whether the input was inside out (geometry/orientation.h) and is drawn with its faces turned.
+    // Whether the input was inside out (geometry/mesh/orientation.h) and is drawn with its faces turned.
     bool turned_inside_out() const { return turned_; }
     size_t crease_count() const { return drawn_.creases.size(); }
     float crease_angle() const { return crease_angle_; }

@@ -1,8 +1,8 @@
 #include "mesh_source.h"
 
-#include "geometry/default_model.h"
+#include "geometry/mesh/default_model.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/orientation.h"
+#include "geometry/mesh/orientation.h"
 
 namespace kappa::app {
 

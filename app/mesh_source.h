@@ -2,8 +2,8 @@
 // when no path is given (conventions.md).
 #pragma once
 
-#include "geometry/drawing_units.h"
-#include "geometry/mesh.h"
+#include "geometry/mesh/drawing_units.h"
+#include "geometry/mesh/mesh.h"
 
 #include <string>
 
@@ -14,8 +14,8 @@ namespace kappa::app {
 Mesh load_mesh_or_default(const std::string& path);
 
 // A mesh made ready to be drawn (render, batch, Python, viewer; not `kappa
-// curvature`): moved to drawing units (geometry/drawing_units.h) and, when
-// its faces point inwards (geometry/orientation.h), turned round.
+// curvature`): moved to drawing units (geometry/mesh/drawing_units.h) and, when
+// its faces point inwards (geometry/mesh/orientation.h), turned round.
 struct DrawingPreparation {
     DrawingUnits units;
     bool turned_inside_out = false;

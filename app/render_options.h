@@ -7,7 +7,7 @@
 
 #include "cli_options.h"
 
-#include "geometry/drawing_units.h"
+#include "geometry/mesh/drawing_units.h"
 #include "geometry/surface_fields.h"
 #include "geometry/view/default_view.h"
 #include "render/camera.h"
@@ -54,7 +54,7 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b);
 // view. orbit_center (optional): where a turntable turns around. Throws
 // cli::UsageError for a degenerate eye/target/up and std::runtime_error
 // for an unreadable --xf file. mesh, bounds and the result are in drawing
-// units (geometry/drawing_units.h: MeshDrawing::units()); --eye, --target
+// units (geometry/mesh/drawing_units.h: MeshDrawing::units()); --eye, --target
 // and --xf, in model units, are converted.
 render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
                            glm::ivec2 size, glm::vec3* orbit_center = nullptr, const DrawingUnits& units = {});

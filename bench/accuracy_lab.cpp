@@ -26,7 +26,7 @@
 
 #include "geometry/curvature/jet.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// Face clusters and their culling bounds (geometry/face_clusters.h,
-// geometry/cluster_bounds.h): the once-per-mesh cost of cluster_faces and
+// Face clusters and their culling bounds (geometry/culling/face_clusters.h,
+// geometry/culling/cluster_bounds.h): the once-per-mesh cost of cluster_faces and
 // compute_cluster_bounds (single-threaded), the per-frame cost of classifying
 // every cluster, and how many clusters / faces the default camera culls.
 // Prints every run and the median.
@@ -7,12 +7,12 @@
 //   bench_clusters [MESH] [RUNS] [MAX_FACES]   (default: ../shared/meshes/bunny-1M.ply next to the repo, 11 runs, 256)
 #include "time_it.h"
 
-#include "geometry/cluster_bounds.h"
-#include "geometry/face_clusters.h"
-#include "geometry/face_geometry.h"
+#include "geometry/culling/cluster_bounds.h"
+#include "geometry/culling/face_clusters.h"
+#include "geometry/curvature/face_geometry.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/vertex_basics.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/curvature/vertex_basics.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/geometric.hpp>
 

@@ -8,7 +8,7 @@
 
 #include "bench_mesh.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
 
 #include <algorithm>

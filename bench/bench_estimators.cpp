@@ -11,7 +11,7 @@
 #include "bench_mesh.h"
 #include "time_it.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
 
 #include <cstdio>

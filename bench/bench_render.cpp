@@ -11,8 +11,8 @@
 //   --line-pass: also the CPU line pass alone (render/cpu_lines.h: extraction, chaining and merging,
 //   no drawing and nothing else running), contours + suggestive and every line type, and the CPU
 //   depth raster alone (render/depth_raster.h), wall and CPU
-#include "geometry/default_model.h"
-#include "geometry/feature_size.h"
+#include "geometry/mesh/default_model.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/surface_analysis.h"
 #include "render/detail_fields.h"

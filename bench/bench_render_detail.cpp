@@ -11,10 +11,10 @@
 // 1024x768, no MSAA.
 //
 //   build/bench_render_detail [--details 0,4,8] [--save DIR]
-#include "geometry/default_model.h"
-#include "geometry/feature_size.h"
+#include "geometry/mesh/default_model.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 #include "render/detail_fields.h"
 #include "render/egl_context.h"

@@ -8,14 +8,14 @@
 // view frames the mesh from +z at 1024x768 (kappa render's default camera).
 #include "time_it.h"
 
-#include "geometry/feature_size.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/ply_io.h"
 #include "geometry/scale/auto_smoothing.h"
 #include "geometry/scale/noise_level.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include "geometry/io/mesh_io.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/scale/pixel_scale.h"
 #include "geometry/scale/scale_space.h"
 #include "geometry/surface_analysis.h"

@@ -6,13 +6,13 @@
 //   build/bench_smoothing [--runs N] [--threads N] [MESH...]
 #include "time_it.h"
 
-#include "geometry/face_geometry.h"
+#include "geometry/curvature/face_geometry.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/vertex_basics.h"
-#include "geometry/parallel.h"
+#include "geometry/curvature/vertex_basics.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/scale/noise_level.h"
 #include "geometry/surface_analysis.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -5,12 +5,12 @@
 //   bench_topology [MESH] [RUNS]   (default: ../shared/meshes/bunny-1M.ply next to the repo, 11 runs)
 #include "time_it.h"
 
-#include "geometry/default_model.h"
-#include "geometry/edge_table.h"
+#include "geometry/mesh/default_model.h"
+#include "geometry/mesh/edge_table.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/mesh_stats.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/parallel.h"
+#include "geometry/mesh/mesh_stats.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 #include <cstdio>

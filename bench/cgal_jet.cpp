@@ -27,8 +27,8 @@
 
 #include "geometry/curvature/jet.h"
 #include "geometry/curvature/rings.h"
-#include "geometry/parallel.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Simple_cartesian.h>

@@ -1,16 +1,16 @@
 #include "surface_analysis.h"
 
-#include "curvature.h"
+#include "geometry/curvature/curvature.h"
 #include "curvature/estimate.h"
-#include "dcurvature.h"
-#include "face_geometry.h"
+#include "geometry/curvature/dcurvature.h"
+#include "geometry/curvature/face_geometry.h"
 #include "scale/auto_smoothing.h"
-#include "smoothing.h"
-#include "vertex_faces.h"
-#include "vertex_flags.h"
-#include "vertex_basics.h"
+#include "geometry/curvature/smoothing.h"
+#include "geometry/mesh/vertex_faces.h"
+#include "geometry/curvature/vertex_flags.h"
+#include "geometry/curvature/vertex_basics.h"
 
-#include "parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

@@ -3,7 +3,7 @@
 // its derivative (Rusinkiewicz 2004), with optional Gaussian smoothing.
 #pragma once
 
-#include "mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "surface_fields.h"
 
 #include <functional>

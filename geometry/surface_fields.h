@@ -6,7 +6,7 @@
 
 #include "curvature/estimator.h"
 #include "scale/noise_level.h"
-#include "vertex_flags.h"
+#include "geometry/curvature/vertex_flags.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

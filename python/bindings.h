@@ -3,7 +3,7 @@
 #pragma once
 
 #include "app/cli_options.h"
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -1,7 +1,7 @@
 // kappa.curvature: the fields of `kappa curvature`, as numpy arrays.
 #include "bindings.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
 
 #include <pybind11/stl.h>

@@ -1,9 +1,9 @@
 // Per frame: may the surface pass cull back faces, and where must it draw
-// them all the same (geometry/back_faces.h)? Culled, llvmpipe sets up half
+// them all the same (geometry/culling/back_faces.h)? Culled, llvmpipe sets up half
 // the triangles: the surface pass of bunny-1M costs a third less.
 #pragma once
 
-#include "geometry/back_faces.h"
+#include "geometry/culling/back_faces.h"
 #include "render/camera.h"
 #include "render/cluster_culling.h"
 #include "render/frame_params.h"

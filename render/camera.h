@@ -4,7 +4,7 @@
 // bounding sphere, or from a trimesh2/rtsc .xf file.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

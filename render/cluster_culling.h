@@ -1,10 +1,10 @@
 // Cluster culling for the contour pass: the triangles are uploaded cluster
-// by cluster (geometry/face_clusters.h), and per frame the CPU picks the
+// by cluster (geometry/culling/face_clusters.h), and per frame the CPU picks the
 // runs of clusters that can hold a line in this view, so the geometry
 // shader (shaders/isolines_geom.glsl) never runs on the others. A cluster
 // is skipped when
 //   - its bounding sphere lies outside the view (widened by the line width),
-//   - it is entirely back-facing (geometry/cluster_bounds.h): n.v < 0 at
+//   - it is entirely back-facing (geometry/culling/cluster_bounds.h): n.v < 0 at
 //     every vertex, so no contour (a sign change of n.v) and no suggestive
 //     contour (drawn only where n.v > 0),
 //   - it is entirely front-facing and cannot hold a suggestive contour:
@@ -19,10 +19,10 @@
 // The result is exact: the same pixels as drawing every triangle.
 #pragma once
 
-#include "geometry/cluster_bounds.h"
-#include "geometry/face_clusters.h"
+#include "geometry/culling/cluster_bounds.h"
+#include "geometry/culling/face_clusters.h"
 #include "geometry/lines/line_extraction.h"
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/frame_params.h"
 #include "render/render_settings.h"

@@ -6,7 +6,7 @@
 #include "geometry/lines/line_extraction.h"
 #include "geometry/lines/view_quantities.h"
 #include "geometry/lines/view_ridges.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "render/cluster_culling.h"
 #include "render/line_prefilter.h"
 #include "render/screen_merge.h"

@@ -1,7 +1,7 @@
 #include "render/depth_raster.h"
 
-#include "geometry/lanes.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/lanes.h"
+#include "geometry/parallel/parallel.h"
 #include "render/surface_renderer.h"
 
 #include <algorithm>
@@ -97,7 +97,7 @@ void fill(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, f
         if (!(lo <= hi)) continue;
         float* row = t.depth + size_t(y) * size_t(t.width);
         int x = int(lo);
-        // Four pixels at a time (geometry/lanes.h: the same operations, the same bits).
+        // Four pixels at a time (geometry/parallel/lanes.h: the same operations, the same bits).
         using lanes::Lanes;
         using Mask = int __attribute__((vector_size(16)));
         // Four lanes while they stay within the row (lanes past hi are written back unchanged:

@@ -1,10 +1,10 @@
 #include "render/detail_fields.h"
 
-#include "geometry/feature_size.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/scale/auto_smoothing.h"
 #include "geometry/scale/noise_level.h"
 #include "geometry/scale/pixel_scale.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <algorithm>
 #include <stdexcept>

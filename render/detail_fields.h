@@ -12,7 +12,7 @@
 // noisy meshes they are smoothed just enough that noise draws no contours.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/scale/scale_space.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
@@ -34,7 +34,7 @@ DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw);
 struct DetailFields {
     SurfaceFields fields;                 // at the detail scale
     std::vector<glm::vec3> fine_normals;  // at pixel scale: contours and shading
-    float feature_size = 1;               // fs of `fields` (geometry/feature_size.h)
+    float feature_size = 1;               // fs of `fields` (geometry/curvature/feature_size.h)
 };
 
 // Fields for one view: camera, image height in pixels, detail in pixels

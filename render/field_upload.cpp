@@ -1,6 +1,6 @@
 #include "render/field_upload.h"
 
-#include "geometry/surface_samples.h"
+#include "geometry/mesh/surface_samples.h"
 #include "render/colormap.h"
 #include "render/mesh_buffers.h"
 

@@ -5,10 +5,10 @@
 // MeshBuffers::upload on the GL thread.
 #pragma once
 
-#include "geometry/creases.h"
+#include "geometry/mesh/creases.h"
 #include "geometry/lines/line_extraction.h"
-#include "geometry/face_clusters.h"
-#include "geometry/mesh.h"
+#include "geometry/culling/face_clusters.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/cluster_culling.h"
 
@@ -31,7 +31,7 @@ struct GpuVertex {
 };
 
 // A seed of streamline hatching (render/hatch_streamlines.h): one of the
-// first kHatchSeeds surface samples (geometry/surface_samples.h, in their
+// first kHatchSeeds surface samples (geometry/mesh/surface_samples.h, in their
 // random order: every prefix is a uniform sample).
 struct HatchSeed {
     glm::vec3 position, normal;

@@ -1,6 +1,6 @@
 #include "render/hatch_field.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "render/surface_renderer.h"
 
 #include <cmath>

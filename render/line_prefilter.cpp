@@ -1,6 +1,6 @@
 #include "render/line_prefilter.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

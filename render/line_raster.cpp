@@ -1,6 +1,6 @@
 #include "render/line_raster.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

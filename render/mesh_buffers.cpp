@@ -1,8 +1,8 @@
 #include "render/mesh_buffers.h"
 
 #include "geometry/lines/line_extraction.h"
-#include "geometry/surface_samples.h"
-#include "geometry/vertex_flags.h"
+#include "geometry/mesh/surface_samples.h"
+#include "geometry/curvature/vertex_flags.h"
 #include "render/colormap.h"
 
 #include <algorithm>

@@ -1,12 +1,12 @@
 // The mesh and its curvature fields on the GPU: one interleaved vertex
 // buffer (position, normal, d1, d2, k1 k2, C, flags, contour normal),
 // the triangles, the open boundary edges, and random surface samples that
-// seed hatching strokes (geometry/surface_samples.h). Every view-dependent quantity
+// seed hatching strokes (geometry/mesh/surface_samples.h). Every view-dependent quantity
 // is computed from these in the shaders, per frame.
 #pragma once
 
-#include "geometry/back_faces.h"
-#include "geometry/mesh.h"
+#include "geometry/culling/back_faces.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
 #include "render/cluster_culling.h"
@@ -21,7 +21,7 @@ namespace kappa::render {
 class MeshBuffers {
 public:
     // Uploads; needs a current GL context. fields must have one entry per
-    // vertex. feature_size: the mesh's feature size fs (geometry/feature_size.h).
+    // vertex. feature_size: the mesh's feature size fs (geometry/curvature/feature_size.h).
     MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                 const std::vector<glm::vec3>& fine_normals = {});
     ~MeshBuffers();
@@ -72,7 +72,7 @@ public:
     const std::vector<Seed>& hatch_seeds() const { return hatch_seeds_; }
     float feature_size() const { return feature_size_; }
     const BoundingSphere& bounds() const { return bounds_; }
-    // Whether back faces may be culled, and the holes to draw them in (geometry/back_faces.h).
+    // Whether back faces may be culled, and the holes to draw them in (geometry/culling/back_faces.h).
     const BackFaceVisibility& back_faces() const { return back_faces_; }
     // The faces are uploaded cluster by cluster (render/cluster_culling.h).
     const MeshClusters& clusters() const { return clusters_; }

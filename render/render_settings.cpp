@@ -1,6 +1,6 @@
 #include "render/render_settings.h"
 
-#include "geometry/creases.h"
+#include "geometry/mesh/creases.h"
 
 #include <glm/geometric.hpp>
 

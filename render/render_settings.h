@@ -3,7 +3,7 @@
 // (its UI edits the same fields). Plain data, no OpenGL.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -29,7 +29,7 @@ struct LineSelection {
     bool contours = true;     // occluding contours: zeros of n.v
     bool suggestive = true;   // suggestive contours: zeros of kr with Dw kr > threshold / fs^2
     bool boundaries = false;  // open mesh boundaries
-    bool creases = true;      // visible sharp edges (geometry/creases.h)
+    bool creases = true;      // visible sharp edges (geometry/mesh/creases.h)
     // View-independent curvature lines (shaders/curvature_lines_geom.glsl).
     bool ridges = false;      // maxima of the larger-magnitude curvature along its direction, > 0
     bool valleys = false;     // the same, < 0
@@ -67,7 +67,7 @@ struct RenderSettings {
     int topo_count = 12;               // topographic lines: N heights evenly across the bounding sphere
     bool fade = true;                  // fade weak suggestive contours towards the threshold
     float detail = 12.0f;              // pixels: lines follow the surface at this scale (0 = off: the raw 1-ring fields)
-    float crease_angle = -1.0f;        // degrees between faces that make a sharp edge; -1 auto, 0 off (geometry/creases.h)
+    float crease_angle = -1.0f;        // degrees between faces that make a sharp edge; -1 auto, 0 off (geometry/mesh/creases.h)
     glm::vec3 line_color{0, 0, 0};
 
     Shading shading = Shading::Lambert;

@@ -3,7 +3,7 @@
 #include "render/frame_params.h"
 #include "render/hatch_streamlines.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

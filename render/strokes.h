@@ -9,7 +9,7 @@
 #pragma once
 
 #include "geometry/lines/line_extraction.h"
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
 #include "render/render_settings.h"

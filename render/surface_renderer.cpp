@@ -45,7 +45,7 @@ SurfaceTriangles surface_triangles(const MeshBuffers& mesh, const FrameParams& f
         t.front = {{0, uint32_t(mesh.face_count())}};  // every face
         return t;
     }
-    // Front faces everywhere, back faces only where a hole is seen (geometry/back_faces.h).
+    // Front faces everywhere, back faces only where a hole is seen (geometry/culling/back_faces.h).
     t.cull = true;
     t.mirrored = culling.mirrored;
     t.front = front_surface_runs(mesh.clusters(), frame);

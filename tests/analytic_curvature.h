@@ -9,12 +9,12 @@
 // (3 E11^2 + 3 E22^2 + 2 E11 E22 + 4 E12^2) / 8.
 #pragma once
 
-#include "geometry/edge_table.h"
-#include "geometry/mesh.h"
-#include "geometry/mesh_stats.h"
-#include "geometry/primitives.h"
+#include "geometry/mesh/edge_table.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/mesh/mesh_stats.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_fields.h"
-#include "geometry/tensor_frames.h"
+#include "geometry/curvature/tensor_frames.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>

@@ -6,10 +6,10 @@
 #include "analytic_curvature.h"
 
 #include "geometry/curvature/estimate.h"
-#include "geometry/face_geometry.h"
-#include "geometry/vertex_basics.h"
-#include "geometry/vertex_faces.h"
-#include "geometry/voronoi_areas.h"
+#include "geometry/curvature/face_geometry.h"
+#include "geometry/curvature/vertex_basics.h"
+#include "geometry/mesh/vertex_faces.h"
+#include "geometry/curvature/voronoi_areas.h"
 
 namespace kappa::test {
 

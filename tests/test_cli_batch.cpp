@@ -3,7 +3,7 @@
 #include "test_shapes.h"
 #include "test_support.h"
 
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 
 #include <catch2/catch.hpp>
 

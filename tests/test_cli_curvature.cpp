@@ -2,7 +2,7 @@
 #include "test_support.h"
 
 #include "geometry/io/mesh_io.h"
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 
 #include <catch2/catch.hpp>
 

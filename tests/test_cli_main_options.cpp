@@ -2,7 +2,7 @@
 // are not a library, so its one source file is compiled into this test here.
 #include "../app/cli_options.cpp"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <catch2/catch.hpp>
 

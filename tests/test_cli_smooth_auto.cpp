@@ -3,7 +3,7 @@
 // stays exactly the columns of conventions.md.
 #include "test_support.h"
 
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 
 #include <catch2/catch.hpp>
 

@@ -10,7 +10,7 @@
 // on the torus, 15% on cubic patches.
 #include "analytic_curvature.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/scale/auto_smoothing.h"
 #include "geometry/surface_analysis.h"
 

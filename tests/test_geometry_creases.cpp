@@ -1,11 +1,11 @@
-// Sharp edges (geometry/creases.h): which edges are creases, the automatic
+// Sharp edges (geometry/mesh/creases.h): which edges are creases, the automatic
 // default that finds them on CAD parts and not on smooth or scanned meshes,
 // and the split that gives each side its own vertices.
 #include "test_support.h"
 
-#include "geometry/creases.h"
+#include "geometry/mesh/creases.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

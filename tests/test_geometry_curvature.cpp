@@ -1,14 +1,14 @@
 // Curvature, normals and areas against analytic surfaces.
-#include "geometry/curvature.h"
-#include "geometry/vertex_basics.h"
-#include "geometry/primitives.h"
+#include "geometry/curvature/curvature.h"
+#include "geometry/curvature/vertex_basics.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
-#include "geometry/vertex_flags.h"
-#include "geometry/face_geometry.h"
-#include "geometry/voronoi_areas.h"
+#include "geometry/curvature/vertex_flags.h"
+#include "geometry/curvature/face_geometry.h"
+#include "geometry/curvature/voronoi_areas.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/double_lanes.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/double_lanes.h"
+#include "geometry/parallel/parallel.h"
 #include "test_support.h"
 
 #include <catch2/catch.hpp>

@@ -2,8 +2,8 @@
 // concave regions (needed for suggestive contours).
 #include <catch2/catch.hpp>
 
-#include "geometry/default_model.h"
-#include "geometry/mesh_stats.h"
+#include "geometry/mesh/default_model.h"
+#include "geometry/mesh/mesh_stats.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,13 +5,13 @@
 
 #include "test_support.h"
 
-#include "geometry/cluster_bounds.h"
-#include "geometry/face_clusters.h"
-#include "geometry/face_geometry.h"
+#include "geometry/culling/cluster_bounds.h"
+#include "geometry/culling/face_clusters.h"
+#include "geometry/curvature/face_geometry.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/vertex_basics.h"
-#include "geometry/primitives.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/curvature/vertex_basics.h"
+#include "geometry/mesh/primitives.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,12 +5,12 @@
 
 #include "test_shapes.h"
 
-#include "geometry/creases.h"
+#include "geometry/mesh/creases.h"
 #include "geometry/lines/chain.h"
 #include "geometry/lines/line_extraction.h"
 #include "geometry/lines/view_ridges.h"
-#include "geometry/parallel.h"
-#include "geometry/primitives.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 
 #include <glm/geometric.hpp>

@@ -5,12 +5,12 @@
 // times it at eta = 0.2 and 0.82 to 0.91 times it at eta = 0.5.
 #include "analytic_curvature.h"
 
-#include "geometry/face_geometry.h"
-#include "geometry/vertex_basics.h"
-#include "geometry/parallel.h"
-#include "geometry/primitives.h"
+#include "geometry/curvature/face_geometry.h"
+#include "geometry/curvature/vertex_basics.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/scale/noise_level.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,17 +1,17 @@
-// Inside-out meshes (geometry/orientation.h): closed and nearly closed
+// Inside-out meshes (geometry/mesh/orientation.h): closed and nearly closed
 // meshes with inward normals are found, those with outward normals and open
 // sheets are not, and flipping turns every normal round.
 #include <catch2/catch.hpp>
 
 #include "test_support.h"
 
-#include "geometry/back_faces.h"
+#include "geometry/culling/back_faces.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/vertex_basics.h"
-#include "geometry/orientation.h"
-#include "geometry/primitives.h"
-#include "geometry/vertex_faces.h"
-#include "geometry/face_geometry.h"
+#include "geometry/curvature/vertex_basics.h"
+#include "geometry/mesh/orientation.h"
+#include "geometry/mesh/primitives.h"
+#include "geometry/mesh/vertex_faces.h"
+#include "geometry/curvature/face_geometry.h"
 
 #include <glm/geometric.hpp>
 
@@ -46,7 +46,7 @@ TEST_CASE("flipping faces turns every vertex normal round", "[geometry][orientat
     for (size_t v = 0; v < before.size(); ++v) CHECK(glm::dot(before[v], after[v]) == Approx(-1.0f).margin(1e-5));
 }
 
-// Back faces may be culled (geometry/back_faces.h) only on consistently
+// Back faces may be culled (geometry/culling/back_faces.h) only on consistently
 // wound, manifold, outward surfaces; the holes are the boundary components.
 TEST_CASE("back faces: cullable surfaces and their holes", "[geometry][orientation]") {
     const Mesh torus = make_torus(1.0f, 0.3f, 48, 24);

@@ -1,6 +1,6 @@
 // The parallel loops every pass is built on: each index once, whatever the
 // thread count and the split.
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,9 +1,9 @@
 // Degenerate input is normal input: finite output everywhere, and flags that say where.
-#include "geometry/feature_size.h"
-#include "geometry/parallel.h"
-#include "geometry/primitives.h"
+#include "geometry/curvature/feature_size.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
-#include "geometry/vertex_flags.h"
+#include "geometry/curvature/vertex_flags.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>

@@ -5,8 +5,8 @@
 // determinism and robustness.
 #include "analytic_curvature.h"
 
-#include "geometry/parallel.h"
-#include "geometry/primitives.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/scale/pixel_scale.h"
 #include "geometry/scale/scale_space.h"
 #include "geometry/scale/surface_clusters.h"

@@ -1,6 +1,6 @@
 // Gaussian smoothing and the feature size.
-#include "geometry/feature_size.h"
-#include "geometry/primitives.h"
+#include "geometry/curvature/feature_size.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 
 #include <catch2/catch.hpp>

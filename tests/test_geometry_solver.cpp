@@ -1,5 +1,5 @@
 // The LDL^T solver behind the per-face fits, on non-diagonal systems.
-#include "geometry/ldlt.h"
+#include "geometry/curvature/ldlt.h"
 
 #include <catch2/catch.hpp>
 

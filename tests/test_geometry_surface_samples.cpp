@@ -1,8 +1,8 @@
 // Area-uniform surface samples (hatching seeds): on the surface, uniform by
 // area in every prefix, with the interpolated normal and principal direction.
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
-#include "geometry/surface_samples.h"
+#include "geometry/mesh/surface_samples.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>

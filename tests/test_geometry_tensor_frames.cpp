@@ -1,7 +1,7 @@
 // The frame changes of the curvature steps (Rusinkiewicz 2004, sec. 3.3):
 // the rotation kept per (vertex, face) corner against trimesh2's
 // rotate-then-project formulas, written independently in tensor_frames.h.
-#include "geometry/tensor_frames.h"
+#include "geometry/curvature/tensor_frames.h"
 
 #include <catch2/catch.hpp>
 

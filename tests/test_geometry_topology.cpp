@@ -4,13 +4,13 @@
 
 #include "test_support.h"
 
-#include "geometry/edge_table.h"
-#include "geometry/mesh_stats.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/primitives.h"
-#include "geometry/face_geometry.h"
-#include "geometry/vertex_flags.h"
-#include "geometry/vertex_basics.h"
+#include "geometry/mesh/edge_table.h"
+#include "geometry/mesh/mesh_stats.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/primitives.h"
+#include "geometry/curvature/face_geometry.h"
+#include "geometry/curvature/vertex_flags.h"
+#include "geometry/curvature/vertex_basics.h"
 
 #include <algorithm>
 #include <cmath>

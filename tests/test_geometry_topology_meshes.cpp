@@ -5,8 +5,8 @@
 #include "test_support.h"
 
 #include "geometry/io/mesh_io.h"
-#include "geometry/mesh_stats.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_stats.h"
+#include "geometry/mesh/mesh_topology.h"
 
 #include <map>
 #include <queue>

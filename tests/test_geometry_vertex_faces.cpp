@@ -1,7 +1,7 @@
 // The vertex-to-corner lists every per-vertex pass reads.
-#include "geometry/parallel.h"
-#include "geometry/primitives.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/mesh/primitives.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <catch2/catch.hpp>
 

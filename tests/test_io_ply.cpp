@@ -1,6 +1,6 @@
 // Handcrafted PLY files: every encoding, every property type and alias,
 // extra and list properties, unknown elements, polygons and triangle strips.
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "test_io_support.h"
 
 #include <cstdio>

@@ -1,7 +1,7 @@
 // PLY and CSV writers: round trips, the exact CSV layout of conventions.md,
 // and write errors.
 #include "geometry/io/output_file.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "test_io_support.h"
 #include "test_support.h"
 

@@ -5,7 +5,7 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 
 #include <glm/trigonometric.hpp>
 

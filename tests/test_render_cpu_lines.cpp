@@ -11,10 +11,10 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/default_model.h"
-#include "geometry/feature_size.h"
+#include "geometry/mesh/default_model.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 #include "render/ink_agreement.h"
 

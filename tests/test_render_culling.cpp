@@ -12,12 +12,12 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/default_model.h"
-#include "geometry/feature_size.h"
+#include "geometry/mesh/default_model.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
-#include "geometry/back_faces.h"
+#include "geometry/culling/back_faces.h"
 #include "render/back_face_culling.h"
 #include "render/cluster_culling.h"
 #include "render/frame_params.h"
@@ -169,7 +169,7 @@ TEST_CASE("the uploaded mesh is the input's faces and fields, reordered", "[rend
 }
 
 // The surface pass culls back faces except where a hole is seen
-// (geometry/back_faces.h, render/back_face_culling.h): the depth it leaves,
+// (geometry/culling/back_faces.h, render/back_face_culling.h): the depth it leaves,
 // which every line's visibility is tested against, is the depth of drawing
 // every face, in views into the holes of a scan, from below, close up and
 // mirrored, with and without MSAA; and white paper (positions only) leaves

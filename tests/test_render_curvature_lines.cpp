@@ -4,7 +4,7 @@
 // cos v = -R / 2r; an ellipsoid's ridges and valleys lie in its symmetry planes.
 #include "test_render_fixtures.h"
 
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 
 #include <glm/gtc/matrix_transform.hpp>

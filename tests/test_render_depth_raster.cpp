@@ -9,7 +9,7 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
-// Meshes far from unit size (geometry/drawing_units.h) are drawn from a copy
+// Meshes far from unit size (geometry/mesh/drawing_units.h) are drawn from a copy
 // of unit size: the same picture as the mesh at its own size, with cameras
 // given in model units converted; and the conversion of a view matrix keeps
 // every point where it was on screen. Meshes whose faces point inwards
-// (geometry/orientation.h) draw as the same mesh the right way round.
+// (geometry/mesh/orientation.h) draw as the same mesh the right way round.
 #include <catch2/catch.hpp>
 
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/drawing_units.h"
+#include "geometry/mesh/drawing_units.h"
 #include "geometry/io/mesh_io.h"
 #include "render/ink_agreement.h"
 #include "render/png_writer.h"
@@ -23,7 +23,7 @@ using test::kappa_render;
 
 
 TEST_CASE("kappa render draws a mesh scaled by 1e20 or 1e-20 as it draws the mesh itself", "[render][cli]") {
-    // geometry/drawing_units.h: such meshes are drawn from a copy of unit size,
+    // geometry/mesh/drawing_units.h: such meshes are drawn from a copy of unit size,
     // and cameras given in model units (--eye) are converted.
     const std::string dir = test::temp_dir();
     const Mesh mesh = load_mesh(test::shared_mesh("fandisk.obj"));

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
 #include "render/image.h"

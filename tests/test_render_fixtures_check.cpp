@@ -5,7 +5,7 @@
 
 #include "test_render_fixtures.h"
 
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 
 #include <glm/geometric.hpp>

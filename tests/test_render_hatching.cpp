@@ -4,7 +4,7 @@
 
 #include "test_render_fixtures.h"
 
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "render/ink_agreement.h"
 
 #include <glm/geometric.hpp>

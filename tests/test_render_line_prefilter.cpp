@@ -5,7 +5,7 @@
 
 #include "test_support.h"
 
-#include "geometry/feature_size.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/lines/curvature_lines.h"
 #include "geometry/surface_analysis.h"

@@ -9,9 +9,9 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/feature_size.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
 #include "render/line_raster.h"
 

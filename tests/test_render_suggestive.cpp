@@ -6,8 +6,8 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "geometry/feature_size.h"
-#include "geometry/primitives.h"
+#include "geometry/curvature/feature_size.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 
 #include <glm/geometric.hpp>
@@ -22,7 +22,7 @@ namespace {
 
 const render::Camera kTorusView = render::Camera::look_at({0, -2.8f, 1.6f}, {0, 0, 0}, {0, 0, 1}, 40.0f);
 
-// Torus R = 1, r = 0.4 with exact fields; fs = r as geometry/feature_size.h gives.
+// Torus R = 1, r = 0.4 with exact fields; fs = r as geometry/curvature/feature_size.h gives.
 struct Torus {
     Mesh mesh = make_torus(1.0f, 0.4f, 160, 64);
     SurfaceFields fields = test::torus_fields(mesh, 1.0f, 0.4f);

@@ -16,7 +16,7 @@
 //     that follow the contour; a sphere's only apparent ridge is its outline.
 #include "test_render_fixtures.h"
 
-#include "geometry/primitives.h"
+#include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // Small meshes written out by hand for tests.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <cstdint>
 #include <fstream>

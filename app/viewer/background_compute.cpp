@@ -1,12 +1,12 @@
 #include "app/viewer/background_compute.h"
 
 #include "app/mesh_source.h"
-#include "geometry/creases.h"
-#include "geometry/feature_size.h"
+#include "geometry/mesh/creases.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/view/default_view.h"
 #include "render/render_settings.h"
 #include "geometry/io/mesh_io.h"
-#include "geometry/vertex_flags.h"
+#include "geometry/curvature/vertex_flags.h"
 
 #include <algorithm>
 #include <chrono>

@@ -6,7 +6,7 @@
 // curvature code cannot be interrupted) and its result is dropped.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/surface_fields.h"
 #include "render/camera.h"
@@ -25,7 +25,7 @@ namespace kappa::viewer {
 
 // Numbers shown in the mesh panel.
 struct ModelSummary {
-    size_t boundary_vertices = 0, flagged_vertices = 0;  // geometry/vertex_flags.h bits
+    size_t boundary_vertices = 0, flagged_vertices = 0;  // geometry/curvature/vertex_flags.h bits
     float k1_min = 0, k1_max = 0, k2_min = 0, k2_max = 0;  // over reliable vertices
 };
 
@@ -61,7 +61,7 @@ public:
     // start), the model arrives with normals, areas and flags, and the full
     // per-vertex fields follow as a completion (take_completion).
     // crease_angle: RenderSettings::crease_angle (the mesh is split at its
-    // sharp edges, geometry/creases.h).
+    // sharp edges, geometry/mesh/creases.h).
     void load(const std::string& path, const SmoothingOptions& smoothing, bool normals_first = false,
               float crease_angle = -1.0f);
     // Recomputes the fields of an already loaded mesh with new widths.

@@ -6,7 +6,7 @@
 #include "points_normals_fit.h"
 #include "tensor_averaging.h"
 
-#include "geometry/tensor_frames.h"
+#include "tensor_frames.h"
 
 namespace kappa {
 

@@ -12,10 +12,10 @@
 // kFlagFallback bit. No estimator ever writes NaN or infinity.
 #pragma once
 
-#include "geometry/curvature.h"
-#include "geometry/face_geometry.h"
-#include "geometry/mesh.h"
-#include "geometry/vertex_faces.h"
+#include "curvature.h"
+#include "face_geometry.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

@@ -4,10 +4,10 @@
 #include "normal_equations.h"
 #include "rings.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/scale/noise_level.h"
-#include "geometry/tensor_frames.h"
-#include "geometry/vertex_flags.h"
+#include "tensor_frames.h"
+#include "vertex_flags.h"
 
 #include <glm/geometric.hpp>
 

@@ -4,9 +4,9 @@
 #include "normal_equations.h"
 #include "rings.h"
 
-#include "geometry/parallel.h"
-#include "geometry/tensor_frames.h"
-#include "geometry/vertex_flags.h"
+#include "geometry/parallel/parallel.h"
+#include "tensor_frames.h"
+#include "vertex_flags.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,6 +1,6 @@
 #include "rings.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 

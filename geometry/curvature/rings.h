@@ -2,8 +2,8 @@
 // adjacency (CSR) and k-rings gathered by breadth-first search.
 #pragma once
 
-#include "geometry/mesh.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <cstdint>
 #include <vector>

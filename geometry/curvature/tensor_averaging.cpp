@@ -1,8 +1,8 @@
 #include "tensor_averaging.h"
 
-#include "geometry/parallel.h"
-#include "geometry/tensor_frames.h"
-#include "geometry/vertex_flags.h"
+#include "geometry/parallel/parallel.h"
+#include "tensor_frames.h"
+#include "vertex_flags.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>

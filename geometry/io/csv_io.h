@@ -1,7 +1,7 @@
 // CSV output of the per-vertex fields (conventions.md, `kappa curvature`).
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "../surface_fields.h"
 #include "io_errors.h"
 

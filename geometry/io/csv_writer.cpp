@@ -2,7 +2,7 @@
 // order, so the output does not depend on the thread count.
 #include "csv_io.h"
 
-#include "../parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "field_columns.h"
 #include "output_file.h"
 

@@ -3,7 +3,7 @@
 // directions, derivative of curvature (a, b, c, d).
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "../surface_fields.h"
 
 #include <cstdint>

@@ -13,7 +13,7 @@
 // "NAME: problem" in one line (MeshLoadError).
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "io_errors.h"
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // triangles, vertex-index checks, and the final sanity checks of a mesh.
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <cstdint>
 #include <string>

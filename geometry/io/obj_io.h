@@ -1,7 +1,7 @@
 // Wavefront OBJ reading through tinyobjloader: positions and faces only.
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "io_errors.h"
 
 #include <cstddef>

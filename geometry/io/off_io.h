@@ -4,7 +4,7 @@
 // faces "N i0 ... iN-1 [colour]" as polygons, fan-triangulated.
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "io_errors.h"
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // properties skipped) and writing of a mesh with its per-vertex fields.
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "../surface_fields.h"
 #include "io_errors.h"
 

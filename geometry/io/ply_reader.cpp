@@ -9,7 +9,7 @@
 #include "ply_sources.h"
 #include "prefault.h"
 
-#include "../parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 #include <atomic>

@@ -7,7 +7,7 @@
 #include "field_columns.h"
 #include "output_file.h"
 
-#include "../parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,6 +1,6 @@
 #include "prefault.h"
 
-#include "../parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <sys/mman.h>
 #include <unistd.h>

@@ -3,7 +3,7 @@
 // exporters also write into their 80-byte header.
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "io_errors.h"
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // own three corners).
 #pragma once
 
-#include "../mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <vector>
 

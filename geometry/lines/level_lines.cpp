@@ -1,7 +1,7 @@
 #include "level_lines.h"
 
 #include "geometry/lines/zero_crossings.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 #include <cmath>

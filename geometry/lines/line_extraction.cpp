@@ -1,12 +1,12 @@
 #include "line_extraction.h"
 
-#include "geometry/creases.h"
+#include "geometry/mesh/creases.h"
 #include "geometry/lines/curvature_lines.h"
 #include "geometry/lines/level_lines.h"
 #include "geometry/lines/view_ridges.h"
 #include "geometry/lines/zero_crossings.h"
 #include "geometry/surface_fields.h"
-#include "geometry/vertex_flags.h"
+#include "geometry/curvature/vertex_flags.h"
 
 #include <glm/geometric.hpp>
 

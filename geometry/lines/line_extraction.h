@@ -19,7 +19,7 @@
 #pragma once
 
 #include "geometry/lines/view_quantities.h"
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -96,7 +96,7 @@ struct LineExtractionOptions {
     LevelSet topo_levels{0, 1, 12};
 };
 
-// A sharp edge (geometry/creases.h) with the unit normals of its two faces.
+// A sharp edge (geometry/mesh/creases.h) with the unit normals of its two faces.
 struct CreaseEdge {
     glm::vec3 a, b;
     glm::vec3 normal_a, normal_b;

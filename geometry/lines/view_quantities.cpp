@@ -1,7 +1,7 @@
 #include "view_quantities.h"
 
-#include "geometry/lanes.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/lanes.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

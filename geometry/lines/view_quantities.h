@@ -8,7 +8,7 @@
 //   tau = (k2 - k1) w1 w2 (DeCarlo et al. 2003; equal to C(w,w,w) + 2 K cot(theta) where kr = 0)
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 
 #include <glm/vec3.hpp>

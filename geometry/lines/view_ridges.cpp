@@ -1,8 +1,8 @@
 #include "view_ridges.h"
 
-#include "geometry/lanes.h"
+#include "geometry/parallel/lanes.h"
 #include "geometry/lines/zero_crossings.h"
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat2x2.hpp>
@@ -18,7 +18,7 @@ using namespace lines;
 namespace {
 
 // The view-dependent curvature written once for a scalar F = float and for
-// F = Lanes, four vertices at once (geometry/lanes.h).
+// F = Lanes, four vertices at once (geometry/parallel/lanes.h).
 using lanes::Lanes;
 using lanes::larger;
 using lanes::magnitude;

@@ -5,7 +5,7 @@
 // point bit for bit (and chain.h can join their segments).
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>

@@ -1,7 +1,7 @@
 #include "level_fit.h"
 
-#include "geometry/ldlt.h"
-#include "geometry/parallel.h"
+#include "geometry/curvature/ldlt.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

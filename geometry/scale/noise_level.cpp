@@ -1,7 +1,7 @@
 #include "noise_level.h"
 
-#include "geometry/parallel.h"
-#include "geometry/tensor_frames.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/curvature/tensor_frames.h"
 
 #include <glm/geometric.hpp>
 

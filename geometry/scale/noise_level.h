@@ -30,8 +30,8 @@
 // (0.91 to 1.01 times eta at 0.2, 0.82 to 0.91 at 0.5).
 #pragma once
 
-#include "geometry/mesh.h"
-#include "geometry/vertex_faces.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/vec3.hpp>
 

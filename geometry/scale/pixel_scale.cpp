@@ -1,6 +1,6 @@
 #include "pixel_scale.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/vec4.hpp>
 

@@ -4,7 +4,7 @@
 // (scale_space.h).
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/mat4x4.hpp>
 

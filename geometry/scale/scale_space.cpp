@@ -1,6 +1,6 @@
 #include "scale_space.h"
 
-#include "geometry/parallel.h"
+#include "geometry/parallel/parallel.h"
 #include "tensor3.h"
 
 #include <glm/geometric.hpp>

@@ -23,7 +23,7 @@
 // the raw estimate for that level.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 #include "level_fit.h"
 #include "surface_clusters.h"

@@ -1,6 +1,6 @@
 #include "surface_clusters.h"
 
-#include "geometry/union_find.h"
+#include "geometry/mesh/union_find.h"
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>

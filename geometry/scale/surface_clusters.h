@@ -15,7 +15,7 @@
 // deterministic. O(V + F).
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/vec3.hpp>
 

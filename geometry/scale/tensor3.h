@@ -7,7 +7,7 @@
 // (tensor_frames.h) only to second order in the angle between them.
 #pragma once
 
-#include "geometry/tensor_frames.h"
+#include "geometry/curvature/tensor_frames.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

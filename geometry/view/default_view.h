@@ -28,7 +28,7 @@
 // every ceil(F / 200000)-th face, so the choice is deterministic.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-#include "geometry/drawing_units.h"
+#include "drawing_units.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

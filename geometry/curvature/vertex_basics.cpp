@@ -1,7 +1,7 @@
 #include "vertex_basics.h"
 
-#include "parallel.h"
-#include "prefetch.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/parallel/prefetch.h"
 #include "vertex_flags.h"
 
 #include <glm/geometric.hpp>

@@ -4,7 +4,7 @@
 // the area and the other two a quarter each.
 #pragma once
 
-#include "double_lanes.h"
+#include "geometry/parallel/double_lanes.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

@@ -1,7 +1,7 @@
 #include "edge_table.h"
 
-#include "io/prefault.h"
-#include "parallel.h"
+#include "geometry/io/prefault.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 

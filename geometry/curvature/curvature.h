@@ -13,11 +13,11 @@
 
 #include "face_geometry.h"
 #include "face_record.h"
-#include "mesh.h"
-#include "prefetch.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/parallel/prefetch.h"
 #include "tensor_frames.h"
-#include "uninitialized_array.h"
-#include "vertex_faces.h"
+#include "geometry/parallel/uninitialized_array.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/vec3.hpp>
 #include <cstddef>

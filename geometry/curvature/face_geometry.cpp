@@ -1,9 +1,9 @@
 #include "face_geometry.h"
 
-#include "degenerate.h"
-#include "double_lanes.h"
-#include "io/prefault.h"
-#include "parallel.h"
+#include "geometry/mesh/degenerate.h"
+#include "geometry/parallel/double_lanes.h"
+#include "geometry/io/prefault.h"
+#include "geometry/parallel/parallel.h"
 #include "voronoi_areas.h"
 
 #include <cstring>

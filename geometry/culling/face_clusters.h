@@ -10,7 +10,7 @@
 // neighbours instead of becoming tiny clusters of their own.
 #pragma once
 
-#include "mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
 // When a triangle is too thin to carry any geometric information.
 #pragma once
 
-#include "double_lanes.h"
+#include "geometry/parallel/double_lanes.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

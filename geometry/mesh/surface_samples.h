@@ -7,7 +7,7 @@
 #pragma once
 
 #include "mesh.h"
-#include "surface_fields.h"
+#include "geometry/surface_fields.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,8 +1,8 @@
-#include "geometry/back_faces.h"
+#include "back_faces.h"
 
-#include "geometry/edge_table.h"
-#include "geometry/orientation.h"
-#include "geometry/union_find.h"
+#include "geometry/mesh/edge_table.h"
+#include "geometry/mesh/orientation.h"
+#include "geometry/mesh/union_find.h"
 
 #include <map>
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "face_record.h"
-#include "mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/vec3.hpp>
 

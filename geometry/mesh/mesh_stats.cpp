@@ -1,7 +1,7 @@
 #include "mesh_stats.h"
 
 #include "degenerate.h"
-#include "parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -9,7 +9,7 @@
 // their three vertices gained nothing from it.)
 #pragma once
 
-#include "vertex_faces.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <cstdint>
 

@@ -5,7 +5,7 @@
 // tridiagonal matrix has no fill-in: L is unit lower bidiagonal.
 #pragma once
 
-#include "double_lanes.h"
+#include "geometry/parallel/double_lanes.h"
 
 #include <cmath>
 

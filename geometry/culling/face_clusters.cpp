@@ -1,6 +1,6 @@
 #include "face_clusters.h"
 
-#include "vertex_faces.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "geometry/orientation.h"
+#include "orientation.h"
 
 #include <glm/geometric.hpp>
 

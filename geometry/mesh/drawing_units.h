@@ -10,7 +10,7 @@
 // curvature per drawing unit). Meshes of ordinary size are drawn as they are.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "mesh.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

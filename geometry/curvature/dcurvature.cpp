@@ -1,8 +1,8 @@
 #include "dcurvature.h"
 
-#include "double_lanes.h"
+#include "geometry/parallel/double_lanes.h"
 #include "ldlt.h"
-#include "parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "face_clusters.h"
-#include "mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/vec3.hpp>
 

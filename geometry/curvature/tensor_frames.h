@@ -5,7 +5,7 @@
 // cos^2 loss of a plain projection.
 #pragma once
 
-#include "double_lanes.h"
+#include "geometry/parallel/double_lanes.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
 #include "cluster_bounds.h"
 
-#include "parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

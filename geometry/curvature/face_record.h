@@ -13,9 +13,9 @@
 //     averaging weights, and each corner's frame rotation.
 #pragma once
 
-#include "mesh.h"
+#include "geometry/mesh/mesh.h"
 #include "tensor_frames.h"
-#include "uninitialized_array.h"
+#include "geometry/parallel/uninitialized_array.h"
 
 #include <glm/vec3.hpp>
 #include <cstddef>

@@ -1,7 +1,7 @@
 #include "vertex_faces.h"
 
-#include "io/prefault.h"
-#include "parallel.h"
+#include "geometry/io/prefault.h"
+#include "geometry/parallel/parallel.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #include "smoothing.h"
 
-#include "parallel.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,7 +5,7 @@
 // Argument: cap every hole (a boundary component) with a surface spanning its
 // boundary vertices. If every edge is used at most once in each direction
 // (consistent winding, no edge with three faces) and the normals point
-// outside (geometry/orientation.h), the capped surface bounds a solid, and a
+// outside (geometry/mesh/orientation.h), the capped surface bounds a solid, and a
 // ray from an eye outside the mesh's bounding sphere enters it through a
 // front-facing face. So the first face a ray meets is front-facing unless
 // the ray passes through a cap: back faces need drawing only inside the
@@ -17,7 +17,7 @@
 // twice in one direction, or no clear outward orientation is not cullable.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "geometry/mesh/mesh.h"
 
 #include <glm/vec3.hpp>
 

@@ -11,7 +11,7 @@
 // has no meaning, mostly have both signs and are left alone.
 #pragma once
 
-#include "geometry/mesh.h"
+#include "mesh.h"
 
 namespace kappa {
 

@@ -13,7 +13,7 @@
 #pragma once
 
 #include "face_geometry.h"
-#include "vertex_faces.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/vec3.hpp>
 #include <cstdint>

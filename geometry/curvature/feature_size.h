@@ -12,8 +12,8 @@
 // there. Deterministic (no sampling).
 #pragma once
 
-#include "mesh.h"
-#include "surface_fields.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/surface_fields.h"
 
 namespace kappa {
 
