@@ -39,22 +39,16 @@ KAPPA_LANES_INLINE void face_geometry(const Mesh& mesh, size_t first, FaceRecord
     const FloatMask<D> usable = narrow_mask<D>(nondegenerate_triangle<D>(e[0], e[1], e[2])) &
                                 (il2_sum - il2_sum == 0.0f);  // finite
     const Vec3<D> corners = mixed_voronoi_corner_areas<D>(e, 0.5 * root(dot(n, n)));
-    const F record[12] = {narrow<D>(n.x),       narrow<D>(n.y),       narrow<D>(n.z),       il2[0],
-                          il2[1],               il2[2],               narrow<D>(corners.x), narrow<D>(corners.y),
-                          narrow<D>(corners.z), F{},                  F{},                  F{}};
+    const F geometry[9] = {narrow<D>(n.x), narrow<D>(n.y), narrow<D>(n.z), il2[0], il2[1], il2[2],
+                           narrow<D>(corners.x), narrow<D>(corners.y), narrow<D>(corners.z)};
+    F record[16] = {};  // FaceRecord's 16 floats, phase 1
+    for (int k = 0; k < 9; ++k) record[k] = keep<D>(usable, geometry[k]);
+    for (int c = 0; c < 3; ++c) record[9 + c] = index_bits[c];  // every face keeps its vertex indices
     float* floats = reinterpret_cast<float*>(out);
-    for (int k = 0; k < 12; k += 4) {
-        F block[4] = {keep<D>(usable, record[k]), keep<D>(usable, record[k + 1]), keep<D>(usable, record[k + 2]),
-                      keep<D>(usable, record[k + 3])};
-        if (k == 8) {  // weights.z, then the vertex indices (kept for every face)
-            block[1] = index_bits[0];
-            block[2] = index_bits[1];
-            block[3] = index_bits[2];
-        }
+    for (int k = 0; k < 16; k += 4) {
+        const F block[4] = {record[k], record[k + 1], record[k + 2], record[k + 3]};
         store4<D>(block, floats + k);
     }
-    const F zeros[4] = {};
-    store4<D>(zeros, floats + 12);
 }
 
 }  // namespace
