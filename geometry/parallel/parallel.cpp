@@ -60,20 +60,8 @@ void parallel_for_chunks(size_t n, const std::function<void(size_t, size_t)>& bo
 }
 
 void parallel_for_dynamic(size_t n, const std::function<void(size_t)>& body) {
-    const size_t threads = std::min<size_t>(thread_count(), n);
-    if (threads <= 1) {
-        for (size_t i = 0; i < n; ++i) body(i);
-        return;
-    }
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-        for (size_t i = next++; i < n; i = next++) body(i);
-    };
-    std::vector<std::thread> workers;
-    workers.reserve(threads - 1);
-    for (size_t t = 1; t < threads; ++t) workers.emplace_back(work);
-    work();
-    for (auto& w : workers) w.join();
+    parallel_for_chunks(
+        n, [&](size_t b, size_t e) { for (size_t i = b; i < e; ++i) body(i); }, 1);
 }
 
 }  // namespace kappa
