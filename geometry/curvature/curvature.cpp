@@ -61,8 +61,9 @@ KAPPA_LANES_INLINE void fit_faces(const Mesh& mesh, const std::vector<glm::vec3>
     // where the face is degenerate (corner areas all 0) or its fit failed.
     const Vec3<F> w = load3<D>([&](int j) { return &out[j].weights.x; });  // the corner areas
     const FloatMask<D> usable = narrow_mask<D>(ok) & ((w.x != 0.0f) | (w.y != 0.0f) | (w.z != 0.0f));
-    const D h0 = 0.5 * (x[0] + x[2]), a2 = 0.5 * (x[0] - x[2]);  // tensor_harmonics of (x0, x1, x2)
-    const F record[16] = {narrow<D>(h0),   narrow<D>(a2),   narrow<D>(x[1]), narrow<D>(u[0]),
+    D h[3];
+    tensor_harmonics<D>(x[0], x[1], x[2], h);
+    const F record[16] = {narrow<D>(h[0]), narrow<D>(h[1]), narrow<D>(h[2]), narrow<D>(u[0]),
                           narrow<D>(u[1]), narrow<D>(v[1]), w.x,             w.y,
                           w.z,             narrow<D>(c[0]), narrow<D>(s[0]), narrow<D>(c[1]),
                           narrow<D>(s[1]), narrow<D>(c[2]), narrow<D>(s[2]), F{}};

@@ -59,8 +59,8 @@ KAPPA_LANES_INLINE void fit_dcurv_faces(const Mesh& mesh, const std::vector<Tens
     const FloatMask<D> ok = narrow_mask<D>(ldlt_solve_tridiagonal_lanes<4, D>(diag, off, m, x));
     // C's harmonics (dcurv_harmonics) replace the fit; a face whose fit
     // failed gets weight 0 (unusable faces have weight 0 already).
-    const D h[4] = {0.75 * (x[0] + x[2]), 0.75 * (x[1] + x[3]), 0.25 * (x[0] - 3.0 * x[2]),
-                    0.25 * (3.0 * x[1] - x[3])};
+    D h[4];
+    dcurv_harmonics<D>(x, h);
     const Vec3<F> w = load3<D>([&](int j) { return record(j) + 6; });
     const F harmonics[4] = {keep<D>(ok, narrow<D>(h[0])), keep<D>(ok, narrow<D>(h[1])), keep<D>(ok, narrow<D>(h[2])),
                             keep<D>(ok, narrow<D>(h[3]))};

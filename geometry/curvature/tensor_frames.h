@@ -155,7 +155,18 @@ inline glm::vec4 transform_dcurv(const FrameChange& m, const glm::vec4& C) {
 //   T(x, x) = h0 + a2 cos 2t + b2 sin 2t,  (h0, a2, b2) = ((ku + kv) / 2, (ku - kv) / 2, kuv).
 // A frame turned by phi turns (a2, b2) by -2 phi (h0, the mean curvature,
 // does not change): cheaper than transform_tensor, and linear.
-inline glm::vec3 tensor_harmonics(const Tensor2& t) { return {0.5f * (t.ku + t.kv), 0.5f * (t.ku - t.kv), t.kuv}; }
+// In any number type or lanes (the face fits form them in double), and for Tensor2.
+template <typename T> KAPPA_LANES_INLINE void tensor_harmonics(T ku, T kuv, T kv, T (&h)[3]) {
+    const lanes::Scalar<T> half = 0.5;
+    h[0] = half * (ku + kv);
+    h[1] = half * (ku - kv);
+    h[2] = kuv;
+}
+inline glm::vec3 tensor_harmonics(const Tensor2& t) {
+    float h[3];
+    tensor_harmonics<float>(t.ku, t.kuv, t.kv, h);
+    return {h[0], h[1], h[2]};
+}
 inline Tensor2 tensor_from_harmonics(const glm::vec3& h) { return {h[0] + h[1], h[2], h[0] - h[1]}; }
 // The harmonics in the frame turned by phi, (c, s) = (cos phi, sin phi), c^2 + s^2 = 1:
 // (h0, a2 cos 2phi + b2 sin 2phi, b2 cos 2phi - a2 sin 2phi), as lanes (h0, a2, b2, any),
@@ -177,8 +188,20 @@ inline glm::vec3 turn_tensor_harmonics(const glm::vec3& h, float c, float s) {
 // (a3, b3) by -3 phi: four rotations' worth of arithmetic where
 // transform_dcurv takes three times as much, and linear, so sums of C in
 // one frame can be turned once.
+// In any number type or lanes (the face fits form them in double), and for glm.
+template <typename T> KAPPA_LANES_INLINE void dcurv_harmonics(const T (&C)[4], T (&h)[4]) {
+    using S = lanes::Scalar<T>;
+    const S three_quarters = 0.75, quarter = 0.25, three = 3.0;
+    h[0] = three_quarters * (C[0] + C[2]);
+    h[1] = three_quarters * (C[1] + C[3]);
+    h[2] = quarter * (C[0] - three * C[2]);
+    h[3] = quarter * (three * C[1] - C[3]);
+}
 inline glm::vec4 dcurv_harmonics(const glm::vec4& C) {
-    return {0.75f * (C[0] + C[2]), 0.75f * (C[1] + C[3]), 0.25f * (C[0] - 3.0f * C[2]), 0.25f * (3.0f * C[1] - C[3])};
+    const float c[4] = {C[0], C[1], C[2], C[3]};
+    float h[4];
+    dcurv_harmonics<float>(c, h);
+    return {h[0], h[1], h[2], h[3]};
 }
 inline glm::vec4 dcurv_from_harmonics(const glm::vec4& h) {
     return {h[0] + h[2], h[1] / 3.0f + h[3], h[0] / 3.0f - h[2], h[1] - h[3]};

@@ -21,7 +21,7 @@
 // everything here is inlined, so no call between objects depends on it.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
-// Lanes filled one by one (gather, gather3) look partly uninitialised to GCC.
+// Lanes filled one by one (load3's z) look partly uninitialised to GCC.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
 namespace kappa::lanes {
@@ -37,6 +37,13 @@ template <typename D> struct MaskOf { using type = bool; };
 template <> struct MaskOf<Doubles2> { using type = Mask2; };
 template <> struct MaskOf<Doubles4> { using type = Mask4; };
 template <typename D> using Mask = typename MaskOf<D>::type;
+
+// The number type of one lane of T (T itself for float and double).
+template <typename T> struct ScalarOf { using type = T; };
+template <> struct ScalarOf<Doubles2> { using type = double; };
+template <> struct ScalarOf<Doubles4> { using type = double; };
+template <> struct ScalarOf<Lanes> { using type = float; };
+template <typename T> using Scalar = typename ScalarOf<T>::type;
 
 // a where m is set, else b (lane by lane for vectors: GCC's vector conditional).
 template <typename D> KAPPA_LANES_INLINE D select(Mask<D> m, D a, D b) { return m ? a : b; }
@@ -68,23 +75,6 @@ template <typename D> KAPPA_LANES_INLINE D sign_of(D x) {
     }
 }
 
-// Lane j of x (x itself for a double), and whether lane j of a mask is set.
-KAPPA_LANES_INLINE double lane(double x, int) { return x; }
-KAPPA_LANES_INLINE bool lane(bool m, int) { return m; }
-template <typename D, typename = std::enable_if_t<!std::is_arithmetic_v<D>>>
-KAPPA_LANES_INLINE auto lane(D x, int j) { return x[j]; }
-
-// get(0), ..., get(L - 1) as lanes.
-template <typename D, typename Get> KAPPA_LANES_INLINE D gather(Get get) {
-    if constexpr (std::is_same_v<D, double>) {
-        return get(0);
-    } else {
-        D r{};
-        for (int j = 0; j < kLanes<D>; ++j) r[j] = get(j);
-        return r;
-    }
-}
-
 // A 3-vector of D.
 template <typename D> struct Vec3 {
     D x, y, z;
@@ -100,23 +90,6 @@ template <typename D> KAPPA_LANES_INLINE Vec3<D> cross(const Vec3<D>& a, const V
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <typename D> KAPPA_LANES_INLINE Vec3<D> normalize(const Vec3<D>& a) { return a * (1.0 / root(dot(a, a))); }
-
-// Per lane, the vec3 get(lane) (a glm::vec3 or dvec3) widened to double.
-template <typename D, typename Get> KAPPA_LANES_INLINE Vec3<D> gather3(Get get) {
-    if constexpr (std::is_same_v<D, double>) {
-        const auto v = get(0);
-        return {double(v.x), double(v.y), double(v.z)};
-    } else {
-        Vec3<D> r{};
-        for (int j = 0; j < kLanes<D>; ++j) {
-            const auto v = get(j);  // one load of the vector per lane
-            r.x[j] = v.x;
-            r.y[j] = v.y;
-            r.z[j] = v.z;
-        }
-        return r;
-    }
-}
 
 // Floats as many as D has lanes (float for one double), and their
 // comparison results: what the face steps load and store, widened to D and
