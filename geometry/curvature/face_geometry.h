@@ -17,11 +17,8 @@ struct FaceGeometry {
     // (p1 - p0) x (p2 - p0): the face normal times twice the area. Zero for a
     // degenerate face (degenerate.h); such faces get zero weight everywhere.
     glm::vec3 area_normal(size_t f) const { return records[f].area_normal(); }
-    // 1 / |e_j|^2 for the edge e_j opposite corner j (0 when degenerate).
-    glm::vec3 inv_edge_len2(size_t f) const { return records[f].inv_edge_len2(); }
     // Mixed Voronoi area of each corner (voronoi_areas.h); they sum to the face area.
     glm::vec3 corner_areas(size_t f) const { return records[f].weights; }
-    bool degenerate(size_t f) const { return !records[f].usable(); }
 };
 
 FaceGeometry compute_face_geometry(const Mesh& mesh);

@@ -43,7 +43,6 @@ struct alignas(64) FaceRecord {
     // (sec. 3.3), as a rotation from (t, b).
     FrameRotation corners[3];
 
-    bool usable() const { return weights != glm::vec3(0.0f); }
     // Phase 1 fields.
     glm::vec3 area_normal() const { return {fit[0], fit[1], fit[2]}; }
     glm::vec3 inv_edge_len2() const { return {fit[3], fit[4], fit[5]}; }
