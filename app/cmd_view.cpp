@@ -70,7 +70,7 @@ int run_view(int argc, char** argv) {
                 "Examples:\n"
                 "  kappa view bunny.ply --detail off   (the raw 1-ring lines)\n"
                 "  kappa view --shading none --lines contours,suggestive\n"
-                "  xvfb-run -a kappa view bunny.ply --size 640x480 --frames 3 --screenshot shot.png\n");
+                "  xvfb-run -a -s -noreset kappa view bunny.ply --size 640x480 --frames 3 --screenshot shot.png\n");
     if (auto status = p.parse(argc, argv)) return *status;
     if (!o.screenshot.empty() && o.frames == 0) o.frames = 2;  // the panel is laid out on the first frame
     o.show_panel = !no_panel;

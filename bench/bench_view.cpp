@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
     const std::string meshes = argc > 2 ? argv[2] : std::string(KAPPA_SOURCE_DIR) + "/../shared/meshes";
     const char* display = std::getenv("DISPLAY");
-    const std::string prefix = display && *display ? "" : "xvfb-run -a -s '-screen 0 1280x800x24' ";
+    const std::string prefix = display && *display ? "" : "xvfb-run -a -s '-screen 0 1280x800x24 -noreset' ";
     const std::string view = prefix + kappa_exe(argv[0]) + " view ";
     const std::string bunny = meshes + "/bunny-1M.ply";
 

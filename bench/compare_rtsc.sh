@@ -47,7 +47,7 @@ types=(
   "boundaries|bdy||||"
 )
 
-xvfb() { xvfb-run -a -s "-screen 0 1280x1024x24" "$@"; }
+xvfb() { xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"; }
 
 echo "| mesh | line type | rtsc ink within 2 px of kappa's | kappa's within 2 px of rtsc's | ink rtsc / kappa | thresholds rtsc / kappa |"
 echo "|---|---|---|---|---|---|"

@@ -16,10 +16,10 @@ frames=${3:-21}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 printf "frames 2\nsave-view $dir/view.xf\n" > "$dir/steps.txt"
-xvfb-run -a -s "-screen 0 1280x1024x24" build/kappa view "$mesh" --size 1024x768 --script "$dir/steps.txt" >/dev/null 2>&1
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" build/kappa view "$mesh" --size 1024x768 --script "$dir/steps.txt" >/dev/null 2>&1
 echo "$(basename "$mesh"), 1024x768, contours + suggestive contours on white, $frames frames a run"
 for r in $(seq "$rounds"); do
-  rt=$(OMP_NUM_THREADS=2 xvfb-run -a -s "-screen 0 1280x1024x24" ../shared/anchors/rtsc-render "$mesh" -xf "$dir/view.xf" \
+  rt=$(OMP_NUM_THREADS=2 xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" ../shared/anchors/rtsc-render "$mesh" -xf "$dir/view.xf" \
        -size 1024x768 -lines contours,suggestive -frames "$frames" -out "$dir/rtsc.png" 2>&1 | awk '/^median_frame_ms/ {print $2}')
   out=$(build/bench_render --rtsc --xf "$dir/view.xf" --frames "$frames" "$mesh")
   k=$(echo "$out" | awk '/white\+contours\+suggestive/ && /no msaa/ {for (i=1;i<=NF;i++) if ($i=="wall") print $(i+1)}')

@@ -34,6 +34,20 @@ size_t count_lines(const std::string& text) {
     return n;
 }
 
+CommandResult run_under_xvfb(const std::string& command) {
+    const std::string xvfb = "xvfb-run -a -s '-screen 0 1280x800x24 -noreset' " + command;
+    // xvfb-run -a may race with another Xvfb starting at the same moment (it
+    // says "Xvfb failed", or the server it found goes away and kappa finds no
+    // display).
+    auto r = run_command(xvfb);
+    for (int retry = 0; retry < 2 && r.exit_code != 0 &&
+                        (r.output.find("Xvfb failed") != std::string::npos ||
+                         r.output.find("kappa view: no display") != std::string::npos);
+         ++retry)
+        r = run_command(xvfb);
+    return r;
+}
+
 CommandResult run_command(const std::string& command) {
     CommandResult r;
     FILE* pipe = popen((command + " 2>&1").c_str(), "r");

@@ -25,21 +25,8 @@ namespace {
 // Window 800x500; the panel is 330 wide, so the drawing area is 470x500.
 constexpr int kWidth = 800, kHeight = 500, kPanel = 330;
 
-std::string xvfb(const std::string& args) {
-    return "xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(KAPPA_EXE) + " view " + args;
-}
-
-// xvfb-run -a may race with another Xvfb starting at the same moment (it
-// says "Xvfb failed", or the server it found goes away and kappa finds no
-// display): retry, at most twice.
 test::CommandResult run_viewer(const std::string& args) {
-    auto r = test::run_command(xvfb(args));
-    for (int retry = 0; retry < 2 && r.exit_code != 0 &&
-                        (r.output.find("Xvfb failed") != std::string::npos ||
-                         r.output.find("kappa view: no display") != std::string::npos);
-         ++retry)
-        r = test::run_command(xvfb(args));
-    return r;
+    return test::run_under_xvfb(std::string(KAPPA_EXE) + " view " + args);
 }
 
 bool is_dark(const render::Rgba& p) { return p.r < 90 && p.g < 90 && p.b < 90; }
@@ -225,8 +212,10 @@ TEST_CASE("a mesh that cannot be read ends a scripted run with one line naming i
     const std::string dir = test::temp_dir();
     test::write_file(dir + "/broken.ply", "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n");
     const auto r = run_viewer(dir + "/broken.ply --size 320x240 --frames 1");
+    INFO(r.output);
     CHECK(r.exit_code == 1);
     CHECK(r.output.find("kappa view: " + dir + "/broken.ply") != std::string::npos);
+    CHECK(test::count_lines(r.output) == 1);
 }
 
 TEST_CASE("every line kind is toggled by its key, and kappa view --help lists the kinds and keys",

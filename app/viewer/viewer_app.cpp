@@ -106,7 +106,7 @@ int ViewerApp::run() {
         if (options_.scripted() && !script_step()) break;
         draw_frame();
     }
-    if (options_.scripted())
+    if (options_.scripted() && exit_status_ == 0)  // a failed run says only what failed
         std::printf("frames: %zu still, median %.1f ms; %zu while dragging, median %.1f ms\n", still_ms_.size(),
                     median(still_ms_), moving_ms_.size(), median(moving_ms_));
     return exit_status_;
