@@ -36,6 +36,18 @@ private:
 
 namespace {
 
+// The last stage of every estimator: optional C smoothing.
+template <typename Report>
+void smooth_dcurv_stage(const Mesh& mesh, const VertexFaces& vf, const SmoothingOptions& smoothing, StageTimes& t,
+                        const Report& report, SurfaceFields& out) {
+    if (smoothing.dcurv > 0) {
+        report(0.8f, "smoothing derivative");
+        StageTimer timer(&t.smoothing);
+        smooth_dcurv({mesh, vf, out.point_areas, out.normals}, smoothing.dcurv, out.d1, out.d2, out.dcurv);
+    }
+    report(1.0f, "done");
+}
+
 // The stages from curvature on for every estimator but the default
 // (geometry/curvature/estimate.h): the estimator's tensors (and normals),
 // optional tensor smoothing, diagonalisation, C (the estimator's, or the
@@ -81,12 +93,7 @@ void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces
         }
         out.d2 = second_principal_directions(out.normals, out.d1);
     }
-    if (smoothing.dcurv > 0) {
-        report(0.8f, "smoothing derivative");
-        StageTimer timer(&t.smoothing);
-        smooth_dcurv({mesh, vf, out.point_areas, out.normals}, smoothing.dcurv, out.d1, out.d2, out.dcurv);
-    }
-    report(1.0f, "done");
+    smooth_dcurv_stage(mesh, vf, smoothing, t, report, out);
 }
 
 SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, StageTimes* times,
@@ -171,12 +178,7 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
         out.dcurv = compute_dcurv(mesh, vf, std::move(faces.records), out.normals, std::move(tensors), out.d1);
         out.d2 = second_principal_directions(out.normals, out.d1);
     }
-    if (smoothing.dcurv > 0) {
-        report(0.8f, "smoothing derivative");
-        StageTimer timer(&t.smoothing);
-        smooth_dcurv({mesh, vf, out.point_areas, out.normals}, smoothing.dcurv, out.d1, out.d2, out.dcurv);
-    }
-    report(1.0f, "done");
+    smooth_dcurv_stage(mesh, vf, smoothing, t, report, out);
     return out;
 }
 
