@@ -5,6 +5,8 @@
 // are most useful.
 #include "test_io_support.h"
 
+#include "geometry/io/gltf_io.h"
+
 using namespace kappa;
 using kappa::test::obj_from;
 using kappa::test::ply_from;
@@ -43,4 +45,17 @@ TEST_CASE("fuzz regression: OBJ 'vw' statement with an infinite joint id", "[io]
     survives([&] { return obj_from(input); });
     Mesh m = obj_from("v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 1e39 0.5\nf 1 2 3\n");
     CHECK(m.face_count() == 1);
+}
+
+TEST_CASE("fuzz regression: .glb whose one buffer has byteLength 0 beside a BIN chunk", "[io][fuzz]") {
+    // tinygltf threw std::out_of_range (vector::at) from inside its loader;
+    // kappa printed it without the file's name (the fuzz target aborted).
+    const std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":0}]})";  // 56 bytes
+    auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    REQUIRE(json.size() % 4 == 0);
+    const std::string bin(8, '\0');
+    const std::string glb = "glTF" + u32(2) + u32(uint32_t(12 + 8 + json.size() + 8 + bin.size())) +
+                            u32(uint32_t(json.size())) + "JSON" + json + u32(uint32_t(bin.size())) + std::string("BIN\0", 4) +
+                            bin;
+    REQUIRE_LOAD_ERROR(read_gltf(glb.data(), glb.size(), "test.glb"), "test.glb", "glTF: ");
 }

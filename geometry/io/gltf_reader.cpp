@@ -188,10 +188,17 @@ Mesh read_gltf(const char* data, size_t size, const std::string& name) {
     const auto slash = name.find_last_of('/');
     const std::string folder = slash == std::string::npos ? "." : name.substr(0, slash);
     const bool binary = io::looks_like_glb(data, size);
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                                         reinterpret_cast<const unsigned char*>(data),
-                                                         unsigned(size), folder)
-                           : loader.LoadASCIIFromString(&model, &error, &warning, data, unsigned(size), folder);
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                                  reinterpret_cast<const unsigned char*>(data), unsigned(size),
+                                                  folder)
+                    : loader.LoadASCIIFromString(&model, &error, &warning, data, unsigned(size), folder);
+    } catch (const std::exception& e) {
+        // tinygltf can throw on malformed input (e.g. a .glb whose only buffer
+        // has byteLength 0 beside a BIN chunk: std::out_of_range from inside).
+        error = std::string("malformed file (") + e.what() + ")";
+    }
     if (!ok) {
         std::string first = error.substr(0, error.find('\n'));
         if (first.empty()) first = "not a valid glTF 2.0 file";
