@@ -3,6 +3,10 @@
 // scale_space.h) at sigma = max(detail x the pixel size at the vertex,
 // noise floor). Features much smaller than `detail` pixels on screen draw
 // no lines; zooming in (smaller pixels on the surface) brings finer ones.
+// Finer than the scale space's first level, the raw 1-ring estimate is
+// blended in only where the mesh's raw C is scale-consistent
+// (geometry/scale/raw_consistency.h); on irregular tessellations it is not,
+// and no fields are finer than 2 mean edges.
 // The noise floor keeps scan noise out of drawings seen from far or close:
 // the normal-smoothing width `--smooth auto` would choose for the mesh's
 // noise (geometry/scale/auto_smoothing.h), zero on clean meshes.
@@ -26,6 +30,9 @@ struct DetailSource {
     ScaleSpace space;
     float noise_floor = 0;    // model units: no fields below this scale
     float contour_floor = 0;  // model units: no contour normals below this scale
+    // Whether the raw C may be blended in below the first level: unknown
+    // until a view first needs it (the test needs the raw curvature).
+    enum class Raw { Unknown, Consistent, Inconsistent } raw = Raw::Unknown;
 };
 
 // raw: compute_surface_fields(mesh) without smoothing.
@@ -50,7 +57,8 @@ struct ViewScales {
 };
 ViewScales view_scales(const Mesh& mesh, const DetailSource& source, const Camera& camera, int image_height,
                        float detail_px);
-// Whether some vertex blends in the raw estimate, so raw must have curvature.
+// Whether some vertex blends in the raw estimate (or the raw C's consistency
+// is still to be tested), so raw must have curvature.
 bool needs_raw_curvature(const DetailSource& source, const ViewScales& scales);
 // Throws std::invalid_argument when raw lacks curvature that the scales need.
 DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw,

@@ -12,6 +12,7 @@
 // Zooming to a quarter of the distance raised the RMS of k1 - k2 on bunny-1M
 // from 79 to 141; 48 px detail lowered it to 27.
 // Lines only (contours and suggestive contours on white), no MSAA.
+#include "analytic_curvature.h"
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
@@ -19,6 +20,7 @@
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/mesh/primitives.h"
+#include "geometry/scale/scale_space.h"
 #include "geometry/surface_analysis.h"
 #include "render/detail_fields.h"
 #include "render/ink_agreement.h"
@@ -141,6 +143,35 @@ TEST_CASE("Zooming in takes the fields at a finer scale", "[render][detail]") {
     INFO("RMS k1 - k2: far " << at_far << ", near " << at_near << ", far at 48 px " << coarser);
     CHECK(at_near > 1.2 * at_far);
     CHECK(coarser < at_far / 1.2);
+}
+
+TEST_CASE("Finer than the first level, the raw C is blended in only where it is scale-consistent",
+          "[render][detail]") {
+    // Scales between the raw estimate's (half an edge) and the first level's
+    // (1.5 edges), as when zooming in on a coarse mesh: a regular torus
+    // blends in its accurate raw C, a jittered one (raw C error 118%) is
+    // drawn at 2 mean edges. Measured 2026-11-25: C error 0.036 and 0.096.
+    for (double jitter : {0.0, 0.3}) {
+        const test::AnalyticMesh torus = test::analytic_torus(1, 0.4, 200, 100, jitter, 100);
+        const SurfaceFields raw = compute_surface_fields(torus.mesh);
+        render::DetailSource source = render::make_detail_source(torus.mesh, raw);
+        render::ViewScales scales;
+        scales.sigma.assign(torus.mesh.vertex_count(), 0.75f * mean_edge_length(torus.mesh));
+        scales.fine = scales.sigma;
+        CHECK(render::needs_raw_curvature(source, scales));
+        const render::DetailFields d = render::detail_fields(torus.mesh, source, raw, scales);
+        const double error = test::relative_dcurv_error(d.fields, torus);
+        INFO("jitter " << jitter << ": C error " << error << " (raw " << test::relative_dcurv_error(raw, torus) << ")");
+        if (jitter == 0.0) {
+            CHECK(source.raw == render::DetailSource::Raw::Consistent);
+            CHECK(error < 0.06);
+            CHECK(render::needs_raw_curvature(source, scales));
+        } else {
+            CHECK(source.raw == render::DetailSource::Raw::Inconsistent);
+            CHECK(error < 0.13);
+            CHECK_FALSE(render::needs_raw_curvature(source, scales));  // decided: the raw curvature is not used
+        }
+    }
 }
 
 TEST_CASE("Detail off draws the raw 1-ring lines, and explicit smoothing widths override detail", "[render][detail]") {
