@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -42,5 +43,13 @@ struct SurfaceFields {
     // Whether vertex v's estimate is flagged unreliable; false without flags.
     bool unreliable(size_t v) const { return v < flags.size() && (flags[v] & kFlagUnreliable); }
 };
+
+// |C|, the norm of the derivative tensor C = (a, b, c, d) in any orthonormal
+// frame: |C|^2 = a^2 + 3b^2 + 3c^2 + d^2 (conventions.md). For glm::vec4
+// (float) or glm::dvec4 (double).
+template <typename Vec4>
+auto dcurv_norm(const Vec4& C) {
+    return std::sqrt(C.x * C.x + 3 * C.y * C.y + 3 * C.z * C.z + C.w * C.w);
+}
 
 }  // namespace kappa

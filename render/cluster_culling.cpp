@@ -56,8 +56,7 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
             if (!reliable || elliptic_up || elliptic_down) continue;
             out.may_have_suggestive[c] = 1;
             for (int k = 0; k < 3; ++k) {
-                const glm::dvec4 C(fields.dcurv[f[k]]);
-                strength = std::max(strength, std::sqrt(C.x * C.x + 3 * C.y * C.y + 3 * C.z * C.z + C.w * C.w) * fs2);
+                strength = std::max(strength, dcurv_norm(glm::dvec4(fields.dcurv[f[k]])) * fs2);
             }
         }
         // Float evaluation in the shader: a margin well above its rounding.

@@ -14,10 +14,7 @@ float colormap_scalar(ColorMap map, const SurfaceFields& f, size_t i) {
         case ColorMap::Mean: return 0.5f * (k1 + k2);
         case ColorMap::Gaussian: return k1 * k2;
         case ColorMap::Principal: return std::max(std::abs(k1), std::abs(k2));
-        case ColorMap::DCurv: {
-            const auto& c = f.dcurv[i];  // |C|^2 = a^2 + 3b^2 + 3c^2 + d^2
-            return std::sqrt(c.x * c.x + 3 * c.y * c.y + 3 * c.z * c.z + c.w * c.w);
-        }
+        case ColorMap::DCurv: return dcurv_norm(f.dcurv[i]);
         case ColorMap::None: break;
     }
     return 0;

@@ -62,8 +62,9 @@ DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const Surface
         if (source.raw == DetailSource::Raw::Unknown)
             source.raw = raw_dcurv_consistency(mesh, source.space, raw).consistent ? DetailSource::Raw::Consistent
                                                                                   : DetailSource::Raw::Inconsistent;
+        const float mean_edge = 2.0f * source.space.raw_scale;  // the raw scale is half a mean edge
         if (source.raw == DetailSource::Raw::Inconsistent)
-            for (float& s : sigma) s = std::max(s, kIrregularFloorEdges * 2.0f * source.space.raw_scale);
+            for (float& s : sigma) s = std::max(s, kIrregularFloorEdges * mean_edge);
     }
     DetailFields out;
     out.fine_normals = normals_at_scale(mesh, source.space, raw, scales.fine);

@@ -47,8 +47,7 @@ double torus_dcurv_error(const Mesh& mesh, const SurfaceFields& f, double R, dou
         const glm::dvec3 p(mesh.positions[i]);
         const double v = std::atan2(p.z, std::hypot(p.x, p.y) - R);
         const double truth = std::sqrt(3.0) * R * std::fabs(std::sin(v)) / (r * std::pow(R + r * std::cos(v), 2));
-        const glm::dvec4 C(f.dcurv[i]);
-        const double est = std::sqrt(C.x * C.x + 3 * C.y * C.y + 3 * C.z * C.z + C.w * C.w);
+        const double est = dcurv_norm(glm::dvec4(f.dcurv[i]));
         err += (est - truth) * (est - truth);
         ref += truth * truth;
     }

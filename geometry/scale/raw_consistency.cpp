@@ -11,11 +11,6 @@ namespace {
 constexpr double kRatio = 2.0;
 constexpr size_t kSamples = 65536;  // at most about this many vertices are compared
 
-double dcurv_magnitude(const glm::vec4& C) {
-    const double a = C.x, b = C.y, c = C.z, d = C.w;
-    return std::sqrt(a * a + 3 * b * b + 3 * c * c + d * d);
-}
-
 }  // namespace
 
 RawConsistency raw_dcurv_consistency(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw) {
@@ -34,8 +29,8 @@ RawConsistency raw_dcurv_consistency(const Mesh& mesh, ScaleSpace& space, const 
     size_t n = 0;
     for (size_t v = 0; v < mesh.vertex_count(); v += stride) {  // serial: the same sums for any thread count
         if (raw.unreliable(v)) continue;
-        const double c_raw = dcurv_magnitude(raw.dcurv[v]), c0 = dcurv_magnitude(first.dcurv[v]),
-                     c1 = dcurv_magnitude(second.dcurv[v]);
+        const double c_raw = dcurv_norm(glm::dvec4(raw.dcurv[v])), c0 = dcurv_norm(glm::dvec4(first.dcurv[v])),
+                     c1 = dcurv_norm(glm::dvec4(second.dcurv[v]));
         if (!std::isfinite(c_raw) || !std::isfinite(c0) || !std::isfinite(c1)) continue;
         step0 += (c_raw - c0) * (c_raw - c0);
         step1 += (c0 - c1) * (c0 - c1);
