@@ -7,8 +7,8 @@
 
 #include "geometry/io/mesh_io.h"
 #include "geometry/io/output_file.h"
-#include "render/image_writer.h"
-#include "render/vector_drawing.h"
+#include "render/image/image_writer.h"
+#include "render/vector/vector_drawing.h"
 
 #include <unistd.h>
 

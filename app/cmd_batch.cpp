@@ -5,7 +5,7 @@
 #include "cli_options.h"
 #include "commands.h"
 
-#include "render/egl_context.h"
+#include "render/gl/egl_context.h"
 #include "render/renderer.h"
 
 #include <cstdio>

@@ -12,9 +12,9 @@
 
 #include "geometry/io/mesh_io.h"
 #include "geometry/io/output_file.h"
-#include "render/egl_context.h"
-#include "render/image_writer.h"
-#include "render/vector_drawing.h"
+#include "render/gl/egl_context.h"
+#include "render/image/image_writer.h"
+#include "render/vector/vector_drawing.h"
 
 #include <glm/trigonometric.hpp>
 

@@ -11,7 +11,7 @@
 #include "app/viewer/shortcuts.h"
 #include "app/viewer/view_state.h"
 #include "app/viewer/viewer_app.h"
-#include "render/egl_context.h"
+#include "render/gl/egl_context.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -5,9 +5,9 @@
 
 #include "geometry/curvature/feature_size.h"
 #include "geometry/lines/line_extraction.h"
-#include "render/field_upload.h"
-#include "render/image_writer.h"
-#include "render/vector_view.h"
+#include "render/fields/field_upload.h"
+#include "render/image/image_writer.h"
+#include "render/vector/vector_view.h"
 
 #include <chrono>
 #include <stdexcept>

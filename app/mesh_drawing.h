@@ -2,19 +2,19 @@
 // mesh of `kappa batch` and the Python module's render() and strokes() share.
 // The mesh is split at its sharp edges (geometry/mesh/creases.h), its fields are
 // computed once (with --detail: the scale space, and per view the fields at
-// the view's scale, render/detail_fields.h), uploaded on the first view and
+// the view's scale, render/fields/detail_fields.h), uploaded on the first view and
 // updated per view when they follow the view.
 #pragma once
 
 #include "geometry/mesh/creases.h"
 #include "geometry/mesh/drawing_units.h"
 #include "geometry/surface_analysis.h"
-#include "render/camera.h"
-#include "render/detail_fields.h"
-#include "render/image.h"
+#include "render/camera/camera.h"
+#include "render/fields/detail_fields.h"
+#include "render/image/image.h"
 #include "render/render_settings.h"
 #include "render/renderer.h"
-#include "render/vector_drawing.h"
+#include "render/vector/vector_drawing.h"
 
 #include <glm/vec2.hpp>
 
@@ -54,7 +54,7 @@ public:
     // The view as an RGBA image (prepare_view, then render_to_image).
     render::Image image(render::Renderer& renderer, const render::Camera& camera,
                         const render::RenderSettings& settings, glm::ivec2 size);
-    // The view as strokes (render/vector_view.h); the surface picture goes
+    // The view as strokes (render/vector/vector_view.h); the surface picture goes
     // to underlay (the drawing points at it).
     render::VectorDrawing vectors(render::Renderer& renderer, const render::Camera& camera,
                                   const render::RenderSettings& settings, glm::ivec2 size, render::Image& underlay);

@@ -10,7 +10,7 @@
 #include "geometry/mesh/drawing_units.h"
 #include "geometry/surface_fields.h"
 #include "geometry/view/default_view.h"
-#include "render/camera.h"
+#include "render/camera/camera.h"
 #include "render/render_settings.h"
 
 #include <glm/vec2.hpp>

@@ -8,19 +8,19 @@
 //   alone; --detail: the fields at that scale for the view, as kappa render draws by default,
 //   instead of the raw 1-ring fields; --only: Lambert and the configurations whose name contains NAME,
 //   e.g. to profile one; --no-msaa: only the frames without multisampling)
-//   --line-pass: also the CPU line pass alone (render/cpu_lines.h: extraction, chaining and merging,
+//   --line-pass: also the CPU line pass alone (render/lines/cpu_lines.h: extraction, chaining and merging,
 //   no drawing and nothing else running), contours + suggestive and every line type, and the CPU
-//   depth raster alone (render/depth_raster.h), wall and CPU
+//   depth raster alone (render/surface/depth_raster.h), wall and CPU
 #include "geometry/mesh/default_model.h"
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/surface_analysis.h"
-#include "render/detail_fields.h"
-#include "render/cpu_lines.h"
-#include "render/depth_raster.h"
-#include "render/egl_context.h"
-#include "render/frame_params.h"
-#include "render/framebuffer.h"
+#include "render/fields/detail_fields.h"
+#include "render/lines/cpu_lines.h"
+#include "render/surface/depth_raster.h"
+#include "render/gl/egl_context.h"
+#include "render/camera/frame_params.h"
+#include "render/gl/framebuffer.h"
 #include "render/renderer.h"
 
 #include <algorithm>
@@ -90,7 +90,7 @@ FrameTime median_line_pass_ms(const render::MeshBuffers& mesh, const render::Cam
     return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
 }
 
-// The surface depth drawn on the CPU alone (render/depth_raster.h).
+// The surface depth drawn on the CPU alone (render/surface/depth_raster.h).
 FrameTime median_depth_raster_ms(const render::MeshBuffers& mesh, const render::Camera& camera, int width, int height,
                                  int frames) {
     render::DepthRaster raster;

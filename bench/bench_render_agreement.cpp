@@ -1,11 +1,11 @@
-// How well two line drawings agree (render/ink_agreement.h): the fraction of
+// How well two line drawings agree (render/image/ink_agreement.h): the fraction of
 // the first image's ink within R pixels of the second's, and back, and the
 // ink counts. Used by bench/compare_rtsc.sh to compare kappa with rtsc.
 //
 //   build/bench_render_agreement A.png B.png [R]     (R: 2 pixels by default)
 // prints: A_within_B B_within_A ink_A ink_B
-#include "render/ink_agreement.h"
-#include "render/png_writer.h"
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// Drawing quality and cost of --detail (render/detail_fields.h): how well
+// Drawing quality and cost of --detail (render/fields/detail_fields.h): how well
 // drawings of one shape agree across tessellations and noise, and how long
 // the fields of a view take. For each detail value (px; 0 = off):
 //   - bunny.ply vs bunny-1M.ply (the same scan after two Loop steps), from
@@ -16,10 +16,10 @@
 #include "geometry/io/mesh_io.h"
 #include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
-#include "render/detail_fields.h"
-#include "render/egl_context.h"
-#include "render/ink_agreement.h"
-#include "render/png_writer.h"
+#include "render/fields/detail_fields.h"
+#include "render/gl/egl_context.h"
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 #include "render/renderer.h"
 
 #include <chrono>

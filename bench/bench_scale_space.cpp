@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     bench::time_it("normals at scale", runs, [&] { (void)normals_at_scale(mesh, space, raw, sigma); });
 
     // The budget of issue 9: the fields of kappa render's default view at the
-    // default detail (what render/detail_fields.cpp does, without GL), against
+    // default detail (what render/fields/detail_fields.cpp does, without GL), against
     // what `kappa curvature MESH -o OUT.ply` does; alternating, same process.
     const std::string out_ply = "/tmp/kappa-bench-scale-space.ply";
     std::vector<double> with_detail, curvature_command, ratio;
@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     };
     for (int r = 0; r < runs + 1; ++r) {
         const double a = seconds([&] {
-            // As kappa render does (render/detail_fields.cpp): normals first,
+            // As kappa render does (render/fields/detail_fields.cpp): normals first,
             // the raw curvature only if the view's scales blend it in.
             const Mesh m = load_mesh(path);
             SurfaceFields f = compute_surface_normals(m);

@@ -1,7 +1,7 @@
-# kappa_render: the OpenGL 3.3 core line-drawing renderer (render/*.cpp).
-# Included from the top CMakeLists.txt when render/*.cpp exist.
+# kappa_render: the OpenGL 3.3 core line-drawing renderer (render/*/*.cpp).
+# Included from the top CMakeLists.txt when render/ has sources.
 #   - glad 2 is generated at build time (python3-glad, offline with --reproducible)
-#   - shaders/*.glsl are embedded into the library as string literals, so the
+#   - shaders/*/*.glsl are embedded into the library as string literals, so the
 #     kappa executable runs from any directory
 #   - EGL for headless contexts, libpng for PNG output, libstb (stb_image_write) for JPEG,
 #     cairo for PDF output
@@ -22,14 +22,14 @@ target_include_directories(kappa_glad PUBLIC ${KAPPA_GLAD_DIR}/include)
 set_target_properties(kappa_glad PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # --- shaders embedded as string literals --------------------------------------
-file(GLOB KAPPA_SHADER_FILES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/*.glsl)
+file(GLOB_RECURSE KAPPA_SHADER_FILES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/*.glsl)
 set(KAPPA_SHADER_CPP ${CMAKE_BINARY_DIR}/generated/embedded_shaders.cpp)
 add_custom_command(
   OUTPUT ${KAPPA_SHADER_CPP}
   COMMAND ${CMAKE_COMMAND} -DOUTPUT=${KAPPA_SHADER_CPP} -DSHADER_DIR=${CMAKE_SOURCE_DIR}/shaders
           -P ${CMAKE_SOURCE_DIR}/cmake/render_embed_shaders.cmake
   DEPENDS ${KAPPA_SHADER_FILES} ${CMAKE_SOURCE_DIR}/cmake/render_embed_shaders.cmake
-  COMMENT "Embedding shaders/*.glsl"
+  COMMENT "Embedding shaders/*/*.glsl"
   VERBATIM)
 
 # --- the library ----------------------------------------------------------------

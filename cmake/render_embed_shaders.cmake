@@ -1,7 +1,8 @@
 # cmake -DOUTPUT=file.cpp -DSHADER_DIR=dir -P render_embed_shaders.cmake
 # Writes a C++ file defining kappa::render::embedded_shaders(): every
-# SHADER_DIR/*.glsl as a (file name, source text) pair of raw string literals.
-file(GLOB files RELATIVE ${SHADER_DIR} ${SHADER_DIR}/*.glsl)
+# SHADER_DIR/*/*.glsl as a (path under SHADER_DIR, source text) pair of raw string
+# literals: shaders are named by their room, e.g. "lines/line_quad.glsl".
+file(GLOB_RECURSE files RELATIVE ${SHADER_DIR} ${SHADER_DIR}/*.glsl)
 list(SORT files)
 set(body "")
 foreach(name ${files})
@@ -10,8 +11,8 @@ foreach(name ${files})
   string(APPEND body "    {\"${name}\", R\"kappa_glsl(${text})kappa_glsl\"},\n")
 endforeach()
 file(WRITE ${OUTPUT}
-"// Generated from shaders/*.glsl by cmake/render_embed_shaders.cmake. Do not edit.
-#include \"render/shader_sources.h\"
+"// Generated from shaders/*/*.glsl by cmake/render_embed_shaders.cmake. Do not edit.
+#include \"render/gl/shader_sources.h\"
 
 namespace kappa::render {
 

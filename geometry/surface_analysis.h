@@ -31,7 +31,7 @@ SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& s
 
 // Only the first stages: normals, point areas and flags (k1, k2, d1, d2 and
 // dcurv left empty). What the scale space needs when a drawing's scales are
-// all above the raw estimate's (render/detail_fields.h).
+// all above the raw estimate's (render/fields/detail_fields.h).
 SurfaceFields compute_surface_normals(const Mesh& mesh, StageTimes* times = nullptr);
 
 }  // namespace kappa

@@ -1,6 +1,6 @@
 #include "gl_session.h"
 
-#include "render/egl_context.h"
+#include "render/gl/egl_context.h"
 
 namespace kappa::python {
 

@@ -7,7 +7,7 @@
 #include "app/render_options.h"
 #include "geometry/io/io_errors.h"
 #include "geometry/lines/line_extraction.h"
-#include "render/egl_context.h"
+#include "render/gl/egl_context.h"
 
 namespace kappa::python {
 

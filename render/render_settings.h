@@ -19,7 +19,7 @@ enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
 enum class Hatching { None, Min, Max, Cross };
 // Where the lines of --lines (all but creases and boundaries) are extracted:
 // auto = on the CPU when the GL is a software renderer (llvmpipe), in
-// geometry shaders otherwise (render/cpu_lines.h).
+// geometry shaders otherwise (render/lines/cpu_lines.h).
 enum class LineExtraction { Auto, Gpu, Cpu };
 
 // Per-vertex direction glyphs (--vectors), as bits.
@@ -30,15 +30,15 @@ struct LineSelection {
     bool suggestive = true;   // suggestive contours: zeros of kr with Dw kr > threshold / fs^2
     bool boundaries = false;  // open mesh boundaries
     bool creases = true;      // visible sharp edges (geometry/mesh/creases.h)
-    // View-independent curvature lines (shaders/curvature_lines_geom.glsl).
+    // View-independent curvature lines (shaders/lines/curvature_lines_geom.glsl).
     bool ridges = false;      // maxima of the larger-magnitude curvature along its direction, > 0
     bool valleys = false;     // the same, < 0
     bool parabolic = false;   // K = 0
     bool mean_zero = false;   // H = 0
-    bool isophotes = false;   // levels of n.l (shaders/level_lines_geom.glsl)
+    bool isophotes = false;   // levels of n.l (shaders/lines/level_lines_geom.glsl)
     bool topo = false;        // levels of the height along y
     bool silhouette = false;  // the exterior silhouette only: contours that border the background
-    // View-dependent lines beyond contours (shaders/isolines_geom.glsl, shaders/view_ridges_geom.glsl).
+    // View-dependent lines beyond contours (shaders/lines/isolines_geom.glsl, shaders/lines/view_ridges_geom.glsl).
     bool apparent_ridges = false;        // Judd et al. 2007: maxima of the view-dependent curvature
     bool suggestive_highlights = false;  // zeros of kr where Dw kr < -threshold / fs^2 (DeCarlo and Rusinkiewicz 2007)
     bool principal_highlights = false;   // where w lies along the principal direction of smaller curvature on ridges and valleys
@@ -57,7 +57,7 @@ struct RenderSettings {
     LineSelection lines;
     float line_width = 2.0f;           // pixels, constant at any zoom
     bool hidden_lines = false;         // also draw the hidden parts of the lines, dashed and light
-    int vectors = 0;                   // glyphs: bits of VectorGlyph (shaders/vectors_geom.glsl)
+    int vectors = 0;                   // glyphs: bits of VectorGlyph (shaders/lines/vectors_geom.glsl)
     float sc_threshold = 0.05f;        // dimensionless (rtsc's default); applied as Dw kr > s / fs^2
     float rv_threshold = 1.5f;         // dimensionless; ridges and valleys where |kmax| > S / fs
     float ar_threshold = 1.0f;         // dimensionless; apparent ridges where the view-dependent curvature > S / fs
@@ -80,7 +80,7 @@ struct RenderSettings {
     float hatch_stroke_length = 16.0f; // pixels
     float hatch_stroke_width = 1.25f;  // pixels
 
-    // Vector output (-o .svg/.pdf): clean-up of the strokes (render/stroke_cleanup.h, render/plotter.h).
+    // Vector output (-o .svg/.pdf): clean-up of the strokes (render/vector/stroke_cleanup.h, render/vector/plotter.h).
     float min_stroke = 0;              // pixels: visible paths shorter than this are dropped
     float simplify = 0.25f;            // pixels: paths simplified within this distance
     float taper = 0;                   // pixels: stroke ends thin out over this length

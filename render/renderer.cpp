@@ -1,7 +1,7 @@
 #include "render/renderer.h"
 
-#include "render/frame_params.h"
-#include "render/hatch_streamlines.h"
+#include "render/camera/frame_params.h"
+#include "render/hatching/hatch_streamlines.h"
 
 #include "geometry/parallel/parallel.h"
 
@@ -91,7 +91,7 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
     // On software GL the CPU draws its own lines too, and the hatching
-    // strokes with them (render/line_raster.h).
+    // strokes with them (render/lines/line_raster.h).
     const std::vector<WindowSegment> strokes = stroke_window_segments(hatching, s.hatch_stroke_width, frame), none;
     const bool cpu_raster = cpu_line_raster_ && cpu_lines;
     if (any_lines || (cpu_raster && !strokes.empty()))

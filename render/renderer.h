@@ -7,17 +7,17 @@
 // against the surface depth) -> composite into the target -> colour bar.
 #pragma once
 
-#include "render/camera.h"
-#include "render/depth_raster.h"
-#include "render/framebuffer.h"
-#include "render/hatch_field.h"
-#include "render/line_renderer.h"
-#include "render/mesh_buffers.h"
+#include "render/camera/camera.h"
+#include "render/surface/depth_raster.h"
+#include "render/gl/framebuffer.h"
+#include "render/hatching/hatch_field.h"
+#include "render/lines/line_renderer.h"
+#include "render/fields/mesh_buffers.h"
 #include "render/render_settings.h"
-#include "render/screen_passes.h"
-#include "render/stroke_pass.h"
-#include "render/strokes.h"
-#include "render/surface_renderer.h"
+#include "render/compose/screen_passes.h"
+#include "render/hatching/stroke_pass.h"
+#include "render/vector/strokes.h"
+#include "render/surface/surface_renderer.h"
 
 #include <memory>
 
@@ -37,7 +37,7 @@ public:
                        const std::vector<glm::vec3>& fine_normals = {});
     // Sharp edges of the uploaded mesh (crease_end_points, field_upload.h).
     void set_creases(const std::vector<glm::vec3>& end_points);
-    // Fields prepared on another thread (render/field_upload.h).
+    // Fields prepared on another thread (render/fields/field_upload.h).
     void upload_fields(FieldUpload&& prepared);
     const MeshBuffers* mesh() const { return mesh_.get(); }
 
@@ -54,24 +54,24 @@ public:
 
     // The hatching strokes of a view of width x height (settings.hatching;
     // none without a mesh): streamlines over the hatching field
-    // (render/hatch_field.h, render/hatch_streamlines.h), in image pixels.
+    // (render/hatching/hatch_field.h, render/hatching/hatch_streamlines.h), in image pixels.
     // Leaves GL_FRAMEBUFFER unbound.
     std::vector<Stroke> hatch_strokes(const Camera& camera, const RenderSettings& settings, int width, int height);
 
     // Where the lines made on the CPU are drawn: on the CPU
-    // (render/line_raster.h; the default on software GL) or as GL quads (the
+    // (render/lines/line_raster.h; the default on software GL) or as GL quads (the
     // default on GPUs). For tests and benchmarks, to compare the two.
     void set_cpu_line_raster(bool on_cpu) { cpu_line_raster_ = on_cpu; }
     bool cpu_line_raster() const { return cpu_line_raster_; }
     // Whether the surface and hatching-field passes may cull back faces where none can be seen
-    // (render/back_face_culling.h; on by default). For tests and benchmarks.
+    // (render/surface/back_face_culling.h; on by default). For tests and benchmarks.
     void set_back_face_culling(bool on) {
         surface_pass_.set_back_face_culling(on);
         hatch_field_.set_back_face_culling(on);
         back_face_culling_ = on;
     }
     // Whether the depth of a surface the colour of the paper is drawn on the
-    // CPU when the lines are (render/depth_raster.h; software GL by
+    // CPU when the lines are (render/surface/depth_raster.h; software GL by
     // default). For tests and benchmarks, to compare with the GL's.
     void set_cpu_surface_depth(bool on) { cpu_surface_depth_ = on; }
 

@@ -6,8 +6,8 @@
 #include "test_support.h"
 
 #include "geometry/view/default_view.h"
-#include "render/camera.h"
-#include "render/png_writer.h"
+#include "render/camera/camera.h"
+#include "render/image/png_writer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,8 +1,8 @@
-// The line passes with their lines made on the CPU (render/cpu_lines.h, the
+// The line passes with their lines made on the CPU (render/lines/cpu_lines.h, the
 // default on software GL) draw what the geometry-shader passes draw: the same
 // triangles are cut by the same tests and the segments drawn by the same
 // fragment shader. The CPU path merges consecutive segments on screen
-// (render/screen_merge.h) within 0.2 px and 1/64 opacity; the box-filtered
+// (render/lines/screen_merge.h) within 0.2 px and 1/64 opacity; the box-filtered
 // coverage moves by at most the distance the centre line moves, so a pixel
 // changes by at most 0.2 + 1/64 < 0.25 of full ink, except in the few
 // pixels where float rounding moves a crossing or a visibility test flips.
@@ -16,7 +16,7 @@
 #include "geometry/io/mesh_io.h"
 #include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
-#include "render/ink_agreement.h"
+#include "render/image/ink_agreement.h"
 
 #include <cstdlib>
 #include <string>
@@ -72,7 +72,7 @@ TEST_CASE("CPU and geometry-shader extraction of lines draw the same image", "[r
 }
 
 // Ridges, valleys, parabolic, H = 0 and topographic lines are extracted once
-// per block of faces and kept between frames (render/view_independent_lines.h):
+// per block of faces and kept between frames (render/lines/view_independent_lines.h):
 // a view drawn after others is the same image as drawn first, and new fields
 // or new settings of those types are not drawn with the old lines.
 TEST_CASE("kept view-independent lines draw what a first frame draws", "[render][cpu-lines]") {

@@ -1,6 +1,6 @@
-// Cluster culling of the contour pass (render/cluster_culling.h) skips work,
+// Cluster culling of the contour pass (render/lines/cluster_culling.h) skips work,
 // never lines: the image is the same with and without it. On software GL the
-// lines are made on the CPU and merged on screen (render/screen_merge.h),
+// lines are made on the CPU and merged on screen (render/lines/screen_merge.h),
 // where a polyline cut at a culled cluster outside the view may merge its
 // first segments inside the view from another point: those pixels move by
 // at most the merge error (test::kScreenMergeTolerance), while a line lost
@@ -18,9 +18,9 @@
 #include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/culling/back_faces.h"
-#include "render/back_face_culling.h"
-#include "render/cluster_culling.h"
-#include "render/frame_params.h"
+#include "render/surface/back_face_culling.h"
+#include "render/lines/cluster_culling.h"
+#include "render/camera/frame_params.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -169,7 +169,7 @@ TEST_CASE("the uploaded mesh is the input's faces and fields, reordered", "[rend
 }
 
 // The surface pass culls back faces except where a hole is seen
-// (geometry/culling/back_faces.h, render/back_face_culling.h): the depth it leaves,
+// (geometry/culling/back_faces.h, render/surface/back_face_culling.h): the depth it leaves,
 // which every line's visibility is tested against, is the depth of drawing
 // every face, in views into the holes of a scan, from below, close up and
 // mirrored, with and without MSAA; and white paper (positions only) leaves

@@ -1,4 +1,4 @@
-// Ridges, valleys, parabolic and mean-zero lines (shaders/curvature_lines_geom.glsl)
+// Ridges, valleys, parabolic and mean-zero lines (shaders/lines/curvature_lines_geom.glsl)
 // where the mathematics puts them: a torus's parabolic lines are its top and
 // bottom circles (cos v = 0), its mean-zero lines the circles where
 // cos v = -R / 2r; an ellipsoid's ridges and valleys lie in its symmetry planes.

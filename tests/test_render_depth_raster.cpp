@@ -1,4 +1,4 @@
-// The surface depth drawn on the CPU (render/depth_raster.h: white paper under
+// The surface depth drawn on the CPU (render/surface/depth_raster.h: white paper under
 // CPU-drawn lines on software GL) is the GL's: the same pixels covered but at
 // the outline, where a pixel centre lies within rounding of an edge, and the
 // same depth within float rounding elsewhere; in views where back faces show

@@ -1,8 +1,8 @@
-// --detail (render/detail_fields.h) judged as a person would: drawings of
+// --detail (render/fields/detail_fields.h) judged as a person would: drawings of
 // one shape agree across tessellations and scan noise, the bunny agrees
 // with its Loop-subdivided million-face version, and --detail off draws the
 // raw 1-ring lines. Agreement = the fraction of each drawing's ink within
-// 2 px of the other's ink (render/ink_agreement.h), both ways; the issue's
+// 2 px of the other's ink (render/image/ink_agreement.h), both ways; the issue's
 // bar is 90%. Measured on 2026-11-23 (build/bench_render_detail, 1024x768):
 //   bunny vs bunny-1M              99.0% / 97.5%   (detail off: 97.2% / 64.9%)
 //   1.3M-face shape + 0.3 h noise  98.6% / 97.9%   (detail off:  8.1% / 100%)
@@ -22,9 +22,9 @@
 #include "geometry/mesh/primitives.h"
 #include "geometry/scale/scale_space.h"
 #include "geometry/surface_analysis.h"
-#include "render/detail_fields.h"
-#include "render/ink_agreement.h"
-#include "render/png_writer.h"
+#include "render/fields/detail_fields.h"
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 
 #include <catch2/catch.hpp>
 

@@ -10,8 +10,8 @@
 
 #include "geometry/mesh/drawing_units.h"
 #include "geometry/io/mesh_io.h"
-#include "render/ink_agreement.h"
-#include "render/png_writer.h"
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -6,9 +6,9 @@
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/surface_analysis.h"
-#include "render/egl_context.h"
-#include "render/ink_agreement.h"
-#include "render/png_writer.h"
+#include "render/gl/egl_context.h"
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 
 #include <glm/geometric.hpp>
 

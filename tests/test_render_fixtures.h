@@ -7,8 +7,8 @@
 
 #include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
-#include "render/camera.h"
-#include "render/image.h"
+#include "render/camera/camera.h"
+#include "render/image/image.h"
 #include "render/render_settings.h"
 #include "render/renderer.h"
 
@@ -44,7 +44,7 @@ render::Image render(const Mesh& mesh, const SurfaceFields& fields, float fs, co
 
 // The largest difference of any channel of two images of one size (0..255).
 int largest_difference(const render::Image& a, const render::Image& b);
-// What merging line segments on screen (render/screen_merge.h: within 0.2 px
+// What merging line segments on screen (render/lines/screen_merge.h: within 0.2 px
 // and 1/64 opacity) may change in a pixel of a line drawing on software GL:
 // box-filtered coverage moves by at most the distance its centre line
 // moves, so 0.2 + 1/64 of full ink, 55 of 255. A line drawn or lost changes

@@ -5,7 +5,7 @@
 #include "test_render_fixtures.h"
 
 #include "geometry/mesh/primitives.h"
-#include "render/ink_agreement.h"
+#include "render/image/ink_agreement.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

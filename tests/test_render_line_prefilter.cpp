@@ -1,4 +1,4 @@
-// The per-vertex prefilter of the CPU line pass (render/line_prefilter.h)
+// The per-vertex prefilter of the CPU line pass (render/lines/line_prefilter.h)
 // never skips a triangle on which the exact per-triangle tests find a line,
 // and skips most triangles.
 #include <catch2/catch.hpp>
@@ -9,7 +9,7 @@
 #include "geometry/io/mesh_io.h"
 #include "geometry/lines/curvature_lines.h"
 #include "geometry/surface_analysis.h"
-#include "render/line_prefilter.h"
+#include "render/lines/line_prefilter.h"
 
 #include <glm/geometric.hpp>
 

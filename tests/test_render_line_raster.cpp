@@ -1,4 +1,4 @@
-// Line coverage drawn on the CPU (render/line_raster.h) is lines_frag.glsl's:
+// Line coverage drawn on the CPU (render/lines/line_raster.h) is lines_frag.glsl's:
 // box-filtered coverage of a line of width w is clamp(w/2 + 1/2 - d, 0, 1)
 // at distance d from the centre line, visibility is decided at the closest
 // point of the centre line, hidden parts are dashed at 35% ink with
@@ -13,7 +13,7 @@
 #include "geometry/io/mesh_io.h"
 #include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
-#include "render/line_raster.h"
+#include "render/lines/line_raster.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,13 +1,13 @@
-// Vector clean-up and --plotter (render/stroke_cleanup.h, render/plotter.h):
+// Vector clean-up and --plotter (render/vector/stroke_cleanup.h, render/vector/plotter.h):
 // on synthetic strokes where the answer is known, and on real drawings
 // written by `kappa render --plotter` and read back from the SVG.
 #include <catch2/catch.hpp>
 
 #include "test_support.h"
 
-#include "render/plotter.h"
-#include "render/stroke_cleanup.h"
-#include "render/vector_drawing.h"
+#include "render/vector/plotter.h"
+#include "render/vector/stroke_cleanup.h"
+#include "render/vector/vector_drawing.h"
 
 #include <glm/geometric.hpp>
 

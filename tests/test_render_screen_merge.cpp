@@ -1,9 +1,9 @@
-// Merging chained segments on screen (render/screen_merge.h): fewer
+// Merging chained segments on screen (render/lines/screen_merge.h): fewer
 // segments, every dropped point within the errors of the segment that
 // replaces it, and nothing merged across a point behind the eye.
 #include <catch2/catch.hpp>
 
-#include "render/screen_merge.h"
+#include "render/lines/screen_merge.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>

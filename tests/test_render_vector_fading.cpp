@@ -1,4 +1,4 @@
-// A fading stroke in SVG and PDF (render/vector_drawing.h: pieces of one
+// A fading stroke in SVG and PDF (render/vector/vector_drawing.h: pieces of one
 // opacity each) read back by rsvg-convert and pdftoppm: along it, no pixel
 // is inked more than the piece over it. Round caps overlapping at the
 // joints of translucent pieces inked about 2a - a^2 there (beads).
@@ -6,8 +6,8 @@
 
 #include "test_support.h"
 
-#include "render/png_writer.h"
-#include "render/vector_drawing.h"
+#include "render/image/png_writer.h"
+#include "render/vector/vector_drawing.h"
 
 #include <algorithm>
 #include <string>

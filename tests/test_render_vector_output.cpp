@@ -7,8 +7,8 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
-#include "render/ink_agreement.h"
-#include "render/png_writer.h"
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 
 #include <string>
 

@@ -1,5 +1,5 @@
-// View-dependent lines beyond contours (shaders/isolines_geom.glsl,
-// shaders/view_ridges_geom.glsl) where the mathematics puts them:
+// View-dependent lines beyond contours (shaders/lines/isolines_geom.glsl,
+// shaders/lines/view_ridges_geom.glsl) where the mathematics puts them:
 //   - a corrugated sheet z = h sin(k x) seen from a camera tilted towards
 //     +x: the projected view direction w runs along +x everywhere, kr is the
 //     curvature along x, zero on the inflection lines x = n pi / k, and

@@ -1,9 +1,9 @@
-// The viewer's camera control (render/orbit_camera.h): trackball rotation
+// The viewer's camera control (render/camera/orbit_camera.h): trackball rotation
 // about the pivot without drift, flips or locks; panning that follows the
 // cursor; zoom toward the point under the cursor; fit and reset.
 #include <catch2/catch.hpp>
 
-#include "render/orbit_camera.h"
+#include "render/camera/orbit_camera.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>

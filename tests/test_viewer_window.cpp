@@ -8,8 +8,8 @@
 
 #include "test_support.h"
 
-#include "render/image.h"
-#include "render/png_writer.h"
+#include "render/image/image.h"
+#include "render/image/png_writer.h"
 
 #include <cmath>
 #include <cstdlib>

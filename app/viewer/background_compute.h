@@ -9,9 +9,9 @@
 #include "geometry/mesh/mesh.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/surface_fields.h"
-#include "render/camera.h"
-#include "render/detail_fields.h"
-#include "render/field_upload.h"
+#include "render/camera/camera.h"
+#include "render/fields/detail_fields.h"
+#include "render/fields/field_upload.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -39,7 +39,7 @@ struct Model {
     // first view (fitting its levels as zooming needs them).
     std::shared_ptr<render::DetailSource> detail;
     glm::vec3 view_direction{0, 0, 1};  // of the default view (geometry/view/default_view.h)
-    std::vector<glm::vec3> crease_points;  // the crease pass's data (render/field_upload.h); `mesh` is split there
+    std::vector<glm::vec3> crease_points;  // the crease pass's data (render/fields/field_upload.h); `mesh` is split there
     size_t input_vertices = 0;             // before the split
     SmoothingOptions smoothing;
     ModelSummary summary;
@@ -68,7 +68,7 @@ public:
     void recompute(const Model& model, const SmoothingOptions& smoothing);
 
     // Fields at the detail scale of a new view, prepared for upload
-    // (render/field_upload.h), for the model already shown. A newer request
+    // (render/fields/field_upload.h), for the model already shown. A newer request
     // replaces an older one not yet started.
     struct ViewRequest {
         std::shared_ptr<const Mesh> mesh;

@@ -1,6 +1,6 @@
 #include "app/viewer/screenshot.h"
 
-#include "render/gl.h"
+#include "render/gl/gl.h"
 
 #include <cstring>
 

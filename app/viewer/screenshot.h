@@ -1,7 +1,7 @@
 // Reading the window back for screenshots.
 #pragma once
 
-#include "render/image.h"
+#include "render/image/image.h"
 
 namespace kappa::viewer {
 

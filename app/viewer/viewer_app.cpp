@@ -1,7 +1,7 @@
 #include "app/viewer/viewer_app.h"
 
-#include "render/gl.h"
-#include "render/gl_loader.h"
+#include "render/gl/gl.h"
+#include "render/gl/gl_loader.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

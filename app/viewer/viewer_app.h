@@ -12,9 +12,9 @@
 #include "app/viewer/shortcuts.h"
 #include "app/viewer/ui_panel.h"
 #include "app/viewer/view_state.h"
-#include "render/orbit_camera.h"
+#include "render/camera/orbit_camera.h"
 #include "render/renderer.h"
-#include "render/window_context.h"
+#include "render/gl/window_context.h"
 
 #include <chrono>
 #include <deque>

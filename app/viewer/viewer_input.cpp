@@ -2,10 +2,10 @@
 #include "app/viewer/viewer_app.h"
 
 #include "app/viewer/screenshot.h"
-#include "render/camera.h"
-#include "render/field_upload.h"
-#include "render/image_writer.h"
-#include "render/vector_view.h"
+#include "render/camera/camera.h"
+#include "render/fields/field_upload.h"
+#include "render/image/image_writer.h"
+#include "render/vector/vector_view.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

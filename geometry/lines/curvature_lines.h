@@ -1,5 +1,5 @@
 // View-independent curvature lines on the CPU, the tests of
-// shaders/curvature_lines_geom.glsl, per triangle with no unreliable vertex:
+// shaders/lines/curvature_lines_geom.glsl, per triangle with no unreliable vertex:
 //   parabolic:  K = k1 k2 = 0
 //   mean-zero:  H = (k1 + k2) / 2 = 0
 //   ridges and valleys (as rtsc; Ohtake et al. 2004): where the derivative e

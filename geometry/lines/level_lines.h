@@ -1,4 +1,4 @@
-// Level lines on the CPU, as shaders/level_lines_geom.glsl: per triangle,
+// Level lines on the CPU, as shaders/lines/level_lines_geom.glsl: per triangle,
 // where the linearly interpolated value crosses each level. Isophotes: n.l =
 // (k - 1/2) / N, k = 1..N, with the fields' normal and the light in model
 // coordinates; topographic lines: heights along y at first + k step.

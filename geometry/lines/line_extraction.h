@@ -1,5 +1,5 @@
 // View-dependent line extraction on the CPU: per view, the segments of the
-// line types that shaders/isolines_geom.glsl, boundary_geom.glsl and
+// line types that shaders/lines/isolines_geom.glsl, boundary_geom.glsl and
 // crease_geom.glsl draw on the GPU, with the same tests, so vector output
 // (strokes) and raster output show the same lines. No OpenGL.
 //
@@ -30,7 +30,7 @@
 namespace kappa {
 
 // The --lines types drawn as strokes, by their --lines names. Hatching is a
-// kind of stroke too (render/hatch_streamlines.h); extract_lines never makes it.
+// kind of stroke too (render/hatching/hatch_streamlines.h); extract_lines never makes it.
 enum class LineType : int {
     Contour, Suggestive, Boundary, Crease,
     SuggestiveHighlight, Dwkr,                   // view-dependent, here

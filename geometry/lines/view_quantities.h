@@ -1,5 +1,5 @@
 // Per-vertex view-dependent quantities on the CPU, for one eye position: the
-// formulas of shaders/view_dependent.glsl and shaders/lines_vert.glsl in the
+// formulas of shaders/common/view_dependent.glsl and shaders/lines/lines_vert.glsl in the
 // same float arithmetic, so CPU strokes and GPU lines cut triangles at the
 // same points (conventions.md, "View-dependent quantities"):
 //   v = unit vector from the vertex to the eye, (u, t) = (v.d1, v.d2)

@@ -32,7 +32,7 @@ struct ViewCurvatureOf {
 };
 
 // k1, k2, C = (a, b, c, d), the normal n, principal directions d1, d2 and
-// the vector to the eye (tx, ty, tz); derivation in shaders/view_curvature.glsl.
+// the vector to the eye (tx, ty, tz); derivation in shaders/common/view_curvature.glsl.
 template <typename F>
 ViewCurvatureOf<F> view_curvature_of(F k1, F k2, F Ca, F Cb, F Cc, F Cd, F nx, F ny, F nz, F d1x, F d1y, F d1z, F d2x,
                                      F d2y, F d2z, F tx, F ty, F tz) {

@@ -1,6 +1,6 @@
 // Apparent ridges and principal highlights on the CPU: the tests of
-// shaders/view_ridges_geom.glsl and the view-dependent curvature of
-// shaders/view_curvature.glsl, per triangle with no unreliable vertex.
+// shaders/lines/view_ridges_geom.glsl and the view-dependent curvature of
+// shaders/common/view_curvature.glsl, per triangle with no unreliable vertex.
 //   apparent ridges (Judd, Durand and Adelson 2007, Sec. 3): maxima of the
 //     view-dependent curvature q1 along its principal direction t1, where
 //     D_t1 q1 t1 changes direction along the triangle's edges and points
@@ -21,7 +21,7 @@ namespace kappa {
 // eigenvalue of Q^T Q, Q = S (I + (sec(theta) - 1) w w^T) in the principal
 // frame; t1 its unit eigenvector in (d1, d2) coordinates; dq1 its
 // derivative along t1 per unit of projected length (from C, the paper's
-// derivative of curvature; derivation in shaders/view_curvature.glsl).
+// derivative of curvature; derivation in shaders/common/view_curvature.glsl).
 struct ViewCurvature {
     float q1 = 0;
     glm::vec2 t1{1, 0};

@@ -1,0 +1,114 @@
+#include "render/camera/camera.h"
+
+#include "geometry/view/default_view.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace kappa::render {
+
+BoundingSphere bounding_sphere(const Mesh& mesh) {
+    if (mesh.positions.empty()) return {};
+    glm::vec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
+    for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    BoundingSphere s;
+    s.center = glm::vec3(0.5 * (glm::dvec3(lo) + glm::dvec3(hi)));
+    double r2 = 0;  // in double: squares of coordinates near 1e20 overflow float
+    for (const auto& p : mesh.positions) {
+        const glm::dvec3 d = glm::dvec3(p) - glm::dvec3(s.center);
+        r2 = std::max(r2, glm::dot(d, d));
+    }
+    s.radius = r2 > 0 ? float(std::sqrt(r2)) : 1.0f;
+    return s;
+}
+
+Camera Camera::look_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fov_y_deg) {
+    Camera c;
+    c.view = glm::lookAt(eye, target, up);
+    c.fov_y_deg = fov_y_deg;
+    return c;
+}
+
+Camera Camera::framing(const BoundingSphere& sphere, float fov_y_deg, float aspect, glm::vec3 direction) {
+    // The sphere touches the narrower side of the frustum: distance r / sin(half angle).
+    const float half_y = glm::radians(fov_y_deg) * 0.5f;
+    const float half_x = std::atan(std::tan(half_y) * aspect);
+    const float distance = sphere.radius / std::sin(std::min(half_x, half_y));
+    const float len = glm::length(direction);
+    const glm::vec3 d = len > 0 && std::isfinite(len) ? direction / len : glm::vec3(0, 0, 1);
+    // y up, unless looking along y: then -z up (the top view's "north").
+    const glm::vec3 up = std::fabs(d.y) > 0.999f ? glm::vec3(0, 0, -d.y) : glm::vec3(0, 1, 0);
+    return look_at(sphere.center + distance * d, sphere.center, up, fov_y_deg);
+}
+
+Camera Camera::default_view(const Mesh& mesh, const BoundingSphere& sphere, float fov_y_deg, float aspect) {
+    return framing(sphere, fov_y_deg, aspect, view_direction(choose_default_view(mesh)));
+}
+
+glm::vec3 Camera::eye() const { return glm::vec3(glm::inverse(view)[3]); }
+
+glm::mat4 Camera::projection(const BoundingSphere& sphere, float aspect) const {
+    // Depth range of the sphere in front of the camera, with some slack.
+    const float center_depth = -(view * glm::vec4(sphere.center, 1)).z;
+    // The model-view may scale (.xf files): measure the radius in camera units.
+    const float scale = glm::length(glm::vec3(view[0]));
+    const float r = sphere.radius * (scale > 0 ? scale : 1.0f);
+    const float far_plane = std::max(center_depth + 1.01f * r, 1e-3f * r);
+    const float near_plane = std::max(center_depth - 1.01f * r, far_plane * 1e-4f);
+    return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane, far_plane);
+}
+
+Camera Camera::orbited(glm::vec3 center, glm::vec3 axis, float radians) const {
+    // Rotating the camera by +a around the axis = rotating the model by -a.
+    const glm::mat4 to_center = glm::translate(glm::mat4(1), center);
+    const glm::mat4 rotate = glm::rotate(glm::mat4(1), -radians, glm::normalize(axis));
+    Camera c = *this;
+    c.view = view * to_center * rotate * glm::translate(glm::mat4(1), -center);
+    return c;
+}
+
+float rtsc_fov_y_deg(int width, int height) {
+    const float diagonal = std::sqrt(float(width) * float(width) + float(height) * float(height));
+    return glm::degrees(2.0f * std::atan(0.35f * float(height) / diagonal));
+}
+
+glm::mat4 read_xf(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(path + ": cannot open the viewpoint file");
+    std::vector<double> v;
+    std::string token;
+    while (in >> token) {
+        std::istringstream ss(token);
+        double x;
+        if (!(ss >> x) || !ss.eof() || !std::isfinite(x))
+            throw std::runtime_error(path + ": not a .xf viewpoint file ('" + token + "' is not a number)");
+        v.push_back(x);
+    }
+    if (v.size() != 12 && v.size() != 16)
+        throw std::runtime_error(path + ": a .xf viewpoint file holds 16 numbers (a 4x4 matrix), found " +
+                                 std::to_string(v.size()));
+    glm::mat4 m(1);  // glm: m[column][row]
+    for (int row = 0; row < int(v.size()) / 4; ++row)
+        for (int col = 0; col < 4; ++col) m[col][row] = float(v[size_t(4 * row + col)]);
+    if (std::abs(glm::determinant(glm::mat3(m))) < 1e-12f)
+        throw std::runtime_error(path + ": the viewpoint matrix is singular");
+    return m;
+}
+
+void write_xf(const std::string& path, const glm::mat4& view) {
+    std::ofstream out(path);
+    for (int row = 0; row < 4; ++row) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%.9g %.9g %.9g %.9g\n", view[0][row], view[1][row], view[2][row],
+                      view[3][row]);
+        out << line;
+    }
+    if (!out) throw std::runtime_error(path + ": cannot write the viewpoint file");
+}
+
+}  // namespace kappa::render

@@ -1,0 +1,67 @@
+// The curvature fields a drawing uses at a detail setting (RenderSettings::
+// detail, `--detail PX`): per vertex, the scale space (geometry/scale/
+// scale_space.h) at sigma = max(detail x the pixel size at the vertex,
+// noise floor). Features much smaller than `detail` pixels on screen draw
+// no lines; zooming in (smaller pixels on the surface) brings finer ones.
+// Finer than the scale space's first level, the raw 1-ring estimate is
+// blended in only where the mesh's raw C is scale-consistent
+// (geometry/scale/raw_consistency.h); on irregular tessellations it is not,
+// and no fields are finer than 2 mean edges.
+// The noise floor keeps scan noise out of drawings seen from far or close:
+// the normal-smoothing width `--smooth auto` would choose for the mesh's
+// noise (geometry/scale/auto_smoothing.h), zero on clean meshes.
+//
+// Occluding contours and shading take the normals at one pixel: the outline
+// stays on the visible silhouette of the polygons whatever the detail. On
+// noisy meshes they are smoothed just enough that noise draws no contours.
+#pragma once
+
+#include "geometry/mesh/mesh.h"
+#include "geometry/scale/scale_space.h"
+#include "geometry/surface_fields.h"
+#include "render/camera/camera.h"
+
+#include <vector>
+
+namespace kappa::render {
+
+// What the detail pipeline keeps per mesh: the scale space and noise floor.
+struct DetailSource {
+    ScaleSpace space;
+    float noise_floor = 0;    // model units: no fields below this scale
+    float contour_floor = 0;  // model units: no contour normals below this scale
+    // Whether the raw C may be blended in below the first level: unknown
+    // until a view first needs it (the test needs the raw curvature).
+    enum class Raw { Unknown, Consistent, Inconsistent } raw = Raw::Unknown;
+};
+
+// raw: compute_surface_fields(mesh) without smoothing.
+DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw);
+
+struct DetailFields {
+    SurfaceFields fields;                 // at the detail scale
+    std::vector<glm::vec3> fine_normals;  // at pixel scale: contours and shading
+    float feature_size = 1;               // fs of `fields` (geometry/curvature/feature_size.h)
+};
+
+// Fields for one view: camera, image height in pixels, detail in pixels
+// (> 0). raw: compute_surface_fields(mesh).
+DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw, const Camera& camera,
+                           int image_height, float detail_px);
+
+// The same in two steps, for callers that start from compute_surface_normals
+// (cheaper) and compute the raw curvature only when a view needs it.
+struct ViewScales {
+    std::vector<float> sigma;  // per vertex: the fields' scale
+    std::vector<float> fine;   // per vertex: the contour and shading normals' scale
+};
+ViewScales view_scales(const Mesh& mesh, const DetailSource& source, const Camera& camera, int image_height,
+                       float detail_px);
+// Whether some vertex blends in the raw estimate (or the raw C's consistency
+// is still to be tested), so raw must have curvature.
+bool needs_raw_curvature(const DetailSource& source, const ViewScales& scales);
+// Throws std::invalid_argument when raw lacks curvature that the scales need.
+DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw,
+                           const ViewScales& scales);
+
+}  // namespace kappa::render

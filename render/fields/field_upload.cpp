@@ -1,0 +1,62 @@
+#include "render/fields/field_upload.h"
+
+#include "geometry/mesh/surface_samples.h"
+#include "render/surface/colormap.h"
+#include "render/fields/mesh_buffers.h"
+
+#include <glm/geometric.hpp>
+
+#include <stdexcept>
+
+namespace kappa::render {
+
+FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
+                                 bool hatch_seeds) {
+    const size_t n = mesh.vertex_count();
+    if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
+        fields.d2.size() != n || fields.dcurv.size() != n)
+        throw std::invalid_argument("MeshBuffers: surface fields do not match the mesh's vertex count");
+    const bool own_fine = !fine_normals.empty();
+    if (own_fine && fine_normals.size() != n)
+        throw std::invalid_argument("MeshBuffers: fine normals do not match the mesh's vertex count");
+
+    FieldUpload u;
+    u.feature_size = feature_size;
+    for (size_t m = 0; m < u.ranges.size(); ++m) u.ranges[m] = robust_range(ColorMap(m), fields);
+    if (clusters.vertex_order.size() != n)
+        throw std::invalid_argument("MeshBuffers: face clusters of another mesh");
+    u.vertices.resize(n);
+    for (size_t i = 0; i < n; ++i) {  // in the clusters' vertex order
+        const uint32_t v = clusters.vertex_order[i];
+        u.vertices[i] = {mesh.positions[v], fields.normals[v], fields.d1[v], fields.d2[v],
+                         {fields.k1[v], fields.k2[v]}, fields.dcurv[v], fields.unreliable(v) ? 1.0f : 0.0f,
+                         own_fine ? fine_normals[v] : fields.normals[v]};
+    }
+    u.clusters = make_mesh_clusters(mesh, fields, clusters, feature_size, fine_normals);
+    if (hatch_seeds) {
+        const SurfaceSamples samples = sample_surface(mesh, fields, kHatchSeeds);
+        u.has_seeds = true;
+        u.seeds.reserve(samples.points.size());
+        for (const SurfaceSample& p : samples.points) u.seeds.push_back({p.position, p.normal});
+    }
+    return u;
+}
+
+std::vector<glm::vec3> crease_end_points(const SplitMesh& split) {
+    std::vector<glm::vec3> out;
+    out.reserve(split.creases.size() * 6);
+    for (const CreaseEdge& c : crease_edges(split.mesh, split.creases, split.crease_faces))
+        out.insert(out.end(), {c.a, c.normal_a, c.normal_b, c.b, c.normal_a, c.normal_b});
+    return out;
+}
+
+std::vector<CreaseEdge> crease_edges_of(const std::vector<glm::vec3>& end_points) {
+    std::vector<CreaseEdge> out;
+    out.reserve(end_points.size() / 6);
+    for (size_t i = 0; i + 6 <= end_points.size(); i += 6)
+        out.push_back({end_points[i], end_points[i + 3], end_points[i + 1], end_points[i + 2]});
+    return out;
+}
+
+}  // namespace kappa::render

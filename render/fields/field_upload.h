@@ -1,0 +1,65 @@
+// The CPU half of putting curvature fields on the GPU: the interleaved
+// vertex records, the culling bounds of the contour pass, colour-map ranges
+// and (optionally) hatching seeds. No OpenGL: it can be built on a worker
+// thread (the viewer prepares fields at a new scale there) and handed to
+// MeshBuffers::upload on the GL thread.
+#pragma once
+
+#include "geometry/mesh/creases.h"
+#include "geometry/lines/line_extraction.h"
+#include "geometry/culling/face_clusters.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/surface_fields.h"
+#include "render/lines/cluster_culling.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <vector>
+
+namespace kappa::render {
+
+// One vertex as the shaders read it (shaders/common/mesh_attributes.glsl).
+struct GpuVertex {
+    glm::vec3 position, normal, d1, d2;
+    glm::vec2 curv;   // k1, k2
+    glm::vec4 dcurv;  // a, b, c, d
+    float unreliable;
+    glm::vec3 fine_normal;  // pixel-scale normal: contours and shading
+};
+
+// A seed of streamline hatching (render/hatching/hatch_streamlines.h): one of the
+// first kHatchSeeds surface samples (geometry/mesh/surface_samples.h, in their
+// random order: every prefix is a uniform sample).
+struct HatchSeed {
+    glm::vec3 position, normal;
+};
+constexpr size_t kHatchSeeds = 32768;
+
+struct FieldUpload {
+    std::vector<GpuVertex> vertices;  // in FaceClusters::vertex_order
+    MeshClusters clusters;
+    std::array<float, 7> ranges{};  // robust colour-map range per ColorMap
+    float feature_size = 1;
+    bool has_seeds = false;        // false: keep the hatching seeds already uploaded
+    std::vector<HatchSeed> seeds;
+};
+
+// fields: one entry per vertex; fine_normals: empty (use fields.normals) or
+// one per vertex; clusters: the face clusters the triangles were uploaded
+// in (the vertex records come in its vertex_order); hatch_seeds: also draw new hatching seeds.
+// Throws std::invalid_argument when sizes do not match the mesh.
+FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
+                                 bool hatch_seeds);
+
+// The crease pass's vertex data (MeshBuffers::set_creases): for each crease
+// of the split mesh, both end points, each with the unit normals of the
+// edge's two faces.
+std::vector<glm::vec3> crease_end_points(const SplitMesh& split);
+// The sharp edges back from that data (for CPU strokes, render/vector/strokes.h).
+std::vector<CreaseEdge> crease_edges_of(const std::vector<glm::vec3>& end_points);
+
+}  // namespace kappa::render

@@ -1,0 +1,104 @@
+// The mesh and its curvature fields on the GPU: one interleaved vertex
+// buffer (position, normal, d1, d2, k1 k2, C, flags, contour normal),
+// the triangles, the open boundary edges, and random surface samples that
+// seed hatching strokes (geometry/mesh/surface_samples.h). Every view-dependent quantity
+// is computed from these in the shaders, per frame.
+#pragma once
+
+#include "geometry/culling/back_faces.h"
+#include "geometry/mesh/mesh.h"
+#include "geometry/surface_fields.h"
+#include "render/camera/camera.h"
+#include "render/lines/cluster_culling.h"
+#include "render/fields/field_upload.h"
+#include "render/gl/gl.h"
+#include "render/render_settings.h"
+
+#include <array>
+
+namespace kappa::render {
+
+class MeshBuffers {
+public:
+    // Uploads; needs a current GL context. fields must have one entry per
+    // vertex. feature_size: the mesh's feature size fs (geometry/curvature/feature_size.h).
+    MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                const std::vector<glm::vec3>& fine_normals = {});
+    ~MeshBuffers();
+    // Replaces the fields (same mesh): vertex attributes, culling bounds,
+    // colour-map ranges and hatching seeds. For fields at a new scale.
+    // fine_normals: normals at pixel scale, for occluding contours (zeros
+    // of n.v) and shading (empty: fields.normals).
+    void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                       const std::vector<glm::vec3>& fine_normals = {});
+    // The same in two halves: prepare_field_upload (render/fields/field_upload.h,
+    // any thread, with face_clusters()) then this, on the GL thread.
+    void upload(FieldUpload&& prepared);
+    const FaceClusters& face_clusters() const { return face_clusters_; }
+    // A CPU copy of what the shaders read, for lines made on the CPU (strokes,
+    // the CPU isoline pass): the positions and faces in the uploaded order
+    // (faces cluster by cluster, vertices in face_clusters().vertex_order); the fields on the GPU now (normals, k1, k2, d1, d2,
+    // C, unreliable vertices as kFlagUnreliable); the pixel-scale contour normals.
+    const Mesh& cpu_mesh() const { return cpu_mesh_; }
+    const SurfaceFields& cpu_fields() const { return cpu_fields_; }
+    const std::vector<glm::vec3>& cpu_fine_normals() const { return cpu_fine_normals_; }
+    // The open boundary edges (vertex pairs in the uploaded order), as draw_boundary_edges draws them.
+    const std::vector<glm::uvec2>& cpu_boundary_edges() const { return cpu_boundary_edges_; }
+    // A number that changes at every upload of fields, different for every
+    // MeshBuffers: for what is computed from the fields and kept.
+    uint64_t fields_version() const { return fields_version_; }
+    MeshBuffers(const MeshBuffers&) = delete;
+    MeshBuffers& operator=(const MeshBuffers&) = delete;
+
+    void draw_triangles() const;       // GL_TRIANGLES over every face
+    void draw_points() const;          // GL_POINTS over every vertex
+    void draw_triangles(const std::vector<FaceRun>& runs) const;  // the faces of these runs (cluster order)
+    // The same with only the positions as attribute 0, from a buffer of
+    // positions alone: a depth-only pass reads 12 bytes a vertex, not a
+    // whole GpuVertex record (a software GL fetches vertices on one thread).
+    void draw_triangle_positions(const std::vector<FaceRun>& runs) const;
+    void draw_boundary_edges() const;  // GL_LINES over every open boundary edge
+    // Sharp edges: per end point its position and the normals of the edge's
+    // two faces (3 vec3 each, 2 end points an edge; shaders/lines/crease_vert.glsl).
+    void set_creases(const std::vector<glm::vec3>& end_points);
+    void draw_creases() const;  // GL_LINES over every crease
+    size_t crease_count() const { return creases_; }
+
+    size_t vertex_count() const { return vertex_count_; }
+    size_t face_count() const { return face_count_; }
+    size_t boundary_edge_count() const { return boundary_edges_; }
+    // The seeds of streamline hatching (render/hatching/hatch_streamlines.h), in their random order.
+    using Seed = HatchSeed;
+    const std::vector<Seed>& hatch_seeds() const { return hatch_seeds_; }
+    float feature_size() const { return feature_size_; }
+    const BoundingSphere& bounds() const { return bounds_; }
+    // Whether back faces may be culled, and the holes to draw them in (geometry/culling/back_faces.h).
+    const BackFaceVisibility& back_faces() const { return back_faces_; }
+    // The faces are uploaded cluster by cluster (render/lines/cluster_culling.h).
+    const MeshClusters& clusters() const { return clusters_; }
+    // Robust colour-map range (render/surface/colormap.h), computed at upload.
+    float map_range(ColorMap map) const { return ranges_[size_t(map)]; }
+
+private:
+    void keep_cpu_copy(const std::vector<GpuVertex>& vertices);
+    GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
+    GLuint position_vao_ = 0, position_buffer_ = 0;  // the positions alone, with triangle_buffer_
+    GLuint edge_vao_ = 0, edge_buffer_ = 0;
+    GLuint crease_vao_ = 0, crease_buffer_ = 0;
+    size_t creases_ = 0;
+    size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0;
+    std::vector<Seed> hatch_seeds_;
+    float feature_size_ = 1;
+    BoundingSphere bounds_;
+    BackFaceVisibility back_faces_;
+    FaceClusters face_clusters_;
+    MeshClusters clusters_;
+    std::array<float, 7> ranges_{};
+    Mesh cpu_mesh_;
+    SurfaceFields cpu_fields_;
+    std::vector<glm::vec3> cpu_fine_normals_;
+    std::vector<glm::uvec2> cpu_boundary_edges_;
+    uint64_t fields_version_ = 0;
+};
+
+}  // namespace kappa::render

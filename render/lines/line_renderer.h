@@ -1,0 +1,46 @@
+// Line passes: every line type of --lines, as screen-space quads (see
+// shaders/lines/line_quad.glsl for why), accumulated as anti-aliased coverage with
+// GL_MAX blending into the bound one-channel framebuffer. Occlusion is tested against the surface depth texture.
+#pragma once
+
+#include "render/lines/cpu_lines.h"
+#include "render/camera/frame_params.h"
+#include "render/fields/mesh_buffers.h"
+#include "render/render_settings.h"
+#include "render/gl/shader_program.h"
+
+#include <future>
+
+namespace kappa::render {
+
+class LineRenderer {
+public:
+    LineRenderer();  // compiles the shaders (GL context current)
+    // Starts making this frame's lines on the CPU (render/lines/cpu_lines.h) on
+    // another thread, so that they are made while the GL draws the surface
+    // (a software rasteriser transforms and bins the surface's triangles on
+    // the calling thread, leaving the other cores idle). draw() waits for them.
+    void begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+    // cpu_lines: the lines of every kind but creases, boundaries and glyphs come from render/lines/cpu_lines.h
+    // (begun by begin_cpu_lines, or made here). Into the bound framebuffer, cleared;
+    // coverage_texture: 0, or its R8 colour texture, for the CPU to draw
+    // those lines into itself (software GL, render/lines/line_raster.h).
+    // strokes (render/hatching/stroke_pass.h): drawn with the CPU lines when those are
+    // rasterised on the CPU (cpu_lines and coverage_texture), else ignored.
+    // cpu_depth: the surface depth when it was drawn on the CPU
+    // (render/surface/depth_raster.h; then surface_depth_texture holds none until a
+    // GL pass needs it, when it is uploaded). Returns where lines were drawn.
+    InkArea draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool cpu_lines,
+                 GLuint surface_depth_texture, GLuint coverage_texture = 0,
+                 const std::vector<WindowSegment>& strokes = {}, const std::vector<float>* cpu_depth = nullptr);
+
+private:
+    void set_common(ShaderProgram& p, const MeshBuffers& mesh, const FrameParams& frame,
+                    const RenderSettings& settings);
+    ShaderProgram isolines_, isolines_highlights_, boundaries_, curvature_lines_, view_ridges_, level_lines_, vectors_,
+        creases_;
+    CpuLinePass cpu_lines_;
+    std::future<CpuLines> pending_cpu_lines_;
+};
+
+}  // namespace kappa::render
