@@ -231,12 +231,14 @@ const std::vector<AppearanceSetting>& appearance_settings() {
             return a;
         }(),
         switch_setting("msaa", "4x multisampling of the surface (default on; unused by a white unlit surface on white, which has no edge to smooth)", &R::msaa, "4x MSAA"),
-        {"line-extraction", "auto|gpu|cpu",
-         "where the lines are extracted: on the CPU (fast on software GL such as llvmpipe), in geometry shaders "
-         "(fast on GPUs), or auto: the CPU on software GL (default auto)",
-         "auto, gpu or cpu",
+        {"line-extraction", "auto|compute|gpu|cpu",
+         "where the lines are extracted: in compute shaders (GL 4.3 or later), in geometry shaders (any GL), on "
+         "the CPU (fast on software GL such as llvmpipe), or auto: compute on hardware GL 4.3 or later, the CPU "
+         "on software GL, else geometry shaders (default auto)",
+         "auto, compute, gpu or cpu",
          [](R& s, const std::string& v) {
              if (v == "auto") s.line_extraction = render::LineExtraction::Auto;
+             else if (v == "compute") s.line_extraction = render::LineExtraction::Compute;
              else if (v == "gpu") s.line_extraction = render::LineExtraction::Gpu;
              else if (v == "cpu") s.line_extraction = render::LineExtraction::Cpu;
              else return false;

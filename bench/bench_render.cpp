@@ -1,4 +1,5 @@
-// Frame time of the line-drawing renderer at 1024x768 (issue 3, "Speed"):
+// Frame time of the line-drawing renderer at 1024x768 (issue 3, "Speed"),
+// frames as the viewer draws them (the compute line path never waits):
 // median of 20 frames, for plain Lambertian shading and for contours +
 // suggestive contours + hatching, on the default model and bunny-1M.ply;
 // and with every line type of --lines on (issue 12: at most 1.5x the
@@ -148,17 +149,22 @@ int main(int argc, char** argv) {
     all.hatching = render::Hatching::Cross;
     render::RenderSettings lines_unculled = lines;  // what cluster culling saves
     lines_unculled.cull_clusters = false;
-    render::RenderSettings lines_gpu = lines, lines_cpu = lines;  // where the contour pass's lines are made
-    lines_gpu.line_extraction = render::LineExtraction::Gpu;
-    lines_cpu.line_extraction = render::LineExtraction::Cpu;
+    // Where the lines are made (auto: the CPU on software GL, compute passes on a hardware GL 4.3).
+    auto on = [](render::RenderSettings s, render::LineExtraction path) {
+        s.line_extraction = path;
+        return s;
+    };
     render::RenderSettings every = lines;  // every kind of render::line_kinds() but the exterior-only silhouette
     for (const render::LineKind& k : render::line_kinds()) every.lines.*(k.flag) = k.name != "silhouette";
     std::vector<Config> configs = {{"lambert", plain}, {"lambert+contours+suggestive", lines},
                                    {"lambert+contours+suggestive+hatching", all},
                                    {"  (contours+suggestive, no culling)", lines_unculled},
-                                   {"  (contours+suggestive, geometry shader)", lines_gpu},
-                                   {"  (contours+suggestive, CPU extraction)", lines_cpu},
-                                   {"lambert+every line type", every}};
+                                   {"  (contours+suggestive, compute)", on(lines, render::LineExtraction::Compute)},
+                                   {"  (contours+suggestive, geometry shader)", on(lines, render::LineExtraction::Gpu)},
+                                   {"  (contours+suggestive, CPU extraction)", on(lines, render::LineExtraction::Cpu)},
+                                   {"lambert+every line type", every},
+                                   {"  (every line type, compute)", on(every, render::LineExtraction::Compute)},
+                                   {"  (every line type, geometry shader)", on(every, render::LineExtraction::Gpu)}};
     if (rtsc) {  // rtsc's frame (bench/frames_vs_rtsc.sh): a white unlit surface with contours and suggestive contours
         render::RenderSettings white = lines;
         white.shading = render::Shading::None;
@@ -183,6 +189,10 @@ int main(int argc, char** argv) {
     for (auto& c : with_msaa) c.settings.msaa = true;
 
     render::Renderer renderer;
+    // Frames as the viewer draws them: the compute path never waits for its segment count.
+    renderer.set_complete_frames(false);
+    const char* path_names[] = {"auto", "compute", "geometry shaders", "CPU"};
+    std::printf("lines of auto: %s\n", path_names[int(renderer.line_path(lines))]);
     render::Framebuffer target({width, height, 0, GL_RGBA8, false});
     for (const auto& path : meshes) {
         Mesh mesh;
@@ -218,11 +228,21 @@ int main(int argc, char** argv) {
                             c.settings.msaa ? "msaa 4x" : "no msaa", t.wall_ms, 100.0 * (t.wall_ms / base.wall_ms - 1.0),
                             t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0));
             }
-            size_t every_row = 0;
-            while (every_row < set->size() && std::string((*set)[every_row].name) != "lambert+every line type") ++every_row;
-            if (every_row > 1 && every_row < set->size())
+            auto row = [&](const char* name) {
+                size_t i = 0;
+                while (i < set->size() && std::string((*set)[i].name) != name) ++i;
+                return i < set->size() && i > 0 ? int(i) : -1;
+            };
+            const int every_row = row("lambert+every line type"), lines_row = row("lambert+contours+suggestive");
+            if (every_row > 0 && lines_row > 0)
                 std::printf("  every line type / contours+suggestive: wall %.2fx, cpu %.2fx\n",
-                        times[every_row].wall_ms / times[1].wall_ms, times[every_row].cpu_ms / times[1].cpu_ms);
+                        times[every_row].wall_ms / times[lines_row].wall_ms, times[every_row].cpu_ms / times[lines_row].cpu_ms);
+            if (lines_row > 0)
+                std::printf("  contours+suggestive - lambert: wall %+.2f ms\n", times[lines_row].wall_ms - times[0].wall_ms);
+            const int every_gs = row("  (every line type, geometry shader)"), lines_gs = row("  (contours+suggestive, geometry shader)");
+            if (every_gs > 0 && lines_gs > 0)
+                std::printf("  geometry shaders: every line type / contours+suggestive: wall %.2fx\n",
+                            times[every_gs].wall_ms / times[lines_gs].wall_ms);
         }
         if (line_pass)
             for (const Config& c : {Config{"contours+suggestive", lines}, Config{"every line type", every}}) {

@@ -10,12 +10,12 @@ find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(PNG REQUIRED)
 find_program(KAPPA_GLAD_EXECUTABLE glad REQUIRED)
 
-# --- glad: GL 3.3 core loader ------------------------------------------------
+# --- glad: GL core loader (3.3 is what the renderer needs; 4.3 adds the compute line path) ------------------------------------------------
 set(KAPPA_GLAD_DIR ${CMAKE_BINARY_DIR}/glad)
 add_custom_command(
   OUTPUT ${KAPPA_GLAD_DIR}/src/gl.c ${KAPPA_GLAD_DIR}/include/glad/gl.h
-  COMMAND ${KAPPA_GLAD_EXECUTABLE} --reproducible --quiet --api gl:core=3.3 --out-path ${KAPPA_GLAD_DIR} c
-  COMMENT "Generating the glad OpenGL 3.3 core loader"
+  COMMAND ${KAPPA_GLAD_EXECUTABLE} --reproducible --quiet --api gl:core=4.6 --out-path ${KAPPA_GLAD_DIR} c
+  COMMENT "Generating the glad OpenGL 4.6 core loader"
   VERBATIM)
 add_library(kappa_glad STATIC ${KAPPA_GLAD_DIR}/src/gl.c)
 target_include_directories(kappa_glad PUBLIC ${KAPPA_GLAD_DIR}/include)

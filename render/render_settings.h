@@ -18,9 +18,11 @@ enum class Shading { None, Lambert, Toon, Hemisphere, ToonBW, Gooch };
 enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
 enum class Hatching { None, Min, Max, Cross };
 // Where the lines of --lines (all but creases and boundaries) are extracted:
-// auto = on the CPU when the GL is a software renderer (llvmpipe), in
-// geometry shaders otherwise (render/lines/cpu_lines.h).
-enum class LineExtraction { Auto, Gpu, Cpu };
+// compute passes (GL 4.3; render/lines/segment_buffer.h), geometry shaders
+// (gpu), or the CPU (render/lines/cpu_lines.h). auto = the CPU when the GL is
+// a software renderer (llvmpipe), compute passes on a hardware GL 4.3 or
+// later, geometry shaders otherwise (Renderer::line_path).
+enum class LineExtraction { Auto, Compute, Gpu, Cpu };
 
 // Per-vertex direction glyphs (--vectors), as bits.
 enum VectorGlyph { kGlyphNormal = 1, kGlyphPrincipal1 = 2, kGlyphPrincipal2 = 4, kGlyphAsymptotic = 8, kGlyphView = 16 };

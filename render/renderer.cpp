@@ -22,6 +22,18 @@ Renderer::Renderer() {
 }
 Renderer::~Renderer() = default;
 
+LineExtraction Renderer::line_path(const RenderSettings& s) const {
+    const bool compute = line_pass_.compute_available();
+    switch (s.line_extraction) {
+        case LineExtraction::Cpu: return LineExtraction::Cpu;
+        case LineExtraction::Gpu: return LineExtraction::Gpu;
+        case LineExtraction::Compute: return compute ? LineExtraction::Compute : LineExtraction::Gpu;
+        case LineExtraction::Auto: break;
+    }
+    if (software_gl_) return LineExtraction::Cpu;
+    return compute ? LineExtraction::Compute : LineExtraction::Gpu;
+}
+
 void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                         const std::vector<glm::vec3>& fine_normals) {
     mesh_.reset();
@@ -64,8 +76,8 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
-    const bool cpu_lines = s.line_extraction == LineExtraction::Cpu ||
-                           (s.line_extraction == LineExtraction::Auto && software_gl_);
+    const LineExtraction path = line_path(s);
+    const bool cpu_lines = path == LineExtraction::Cpu;
     const bool any_lines = mesh_ && (s.lines.any() || s.vectors != 0);
     // White paper under lines drawn on the CPU: its depth is all the frame needs of it, drawn on the
     // CPU (the GL's depth buffer is then not cleared: a GL pass that needs it gets the CPU's uploaded).
@@ -95,7 +107,7 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     const std::vector<WindowSegment> strokes = stroke_window_segments(hatching, s.hatch_stroke_width, frame), none;
     const bool cpu_raster = cpu_line_raster_ && cpu_lines;
     if (any_lines || (cpu_raster && !strokes.empty()))
-        ink_ = line_pass_.draw(*mesh_, frame, s, cpu_lines, surface_fb_.depth_texture(),
+        ink_ = line_pass_.draw(*mesh_, frame, s, path, surface_fb_.depth_texture(),
                                cpu_line_raster_ ? lines_fb_.color_texture() : 0, cpu_raster ? strokes : none,
                                cpu_depth_);
     else

@@ -25,7 +25,7 @@ namespace kappa::render {
 
 class Renderer {
 public:
-    Renderer();  // compiles every shader; needs a current GL 3.3 core context
+    Renderer();  // compiles every shader; needs a current GL 3.3 core context (4.3 for the compute line path)
     ~Renderer();
 
     // Uploads the mesh and its fields (replacing any previous mesh).
@@ -74,6 +74,15 @@ public:
     // CPU when the lines are (render/surface/depth_raster.h; software GL by
     // default). For tests and benchmarks, to compare with the GL's.
     void set_cpu_surface_depth(bool on) { cpu_surface_depth_ = on; }
+    // Where this context extracts the lines of `settings` (never Auto; render_settings.h).
+    LineExtraction line_path(const RenderSettings& settings) const;
+    // With the compute path, whether every frame waits until its segment
+    // buffer held all its lines (true, the default: images for files) or is
+    // drawn at once while the buffer grows for the next frame (a viewer).
+    void set_complete_frames(bool complete) { line_pass_.set_complete_frames(complete); }
+    // The compute path's segment buffer (render/lines/segment_buffer.h; null
+    // without GL 4.3). For tests and benchmarks.
+    SegmentBuffer* segment_buffer() { return line_pass_.segment_buffer(); }
 
 private:
     void ensure_buffers(int width, int height, bool msaa);

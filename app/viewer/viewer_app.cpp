@@ -82,6 +82,7 @@ void ViewerApp::open_window() {
     wo.vsync = !options_.scripted();  // scripted runs go as fast as they can
     window_ = render::WindowContext::create(wo);
     renderer_ = std::make_unique<render::Renderer>();
+    renderer_->set_complete_frames(false);  // a frame never waits for the compute path's segment count
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();

@@ -29,6 +29,8 @@ struct GpuVertex {
     float unreliable;
     glm::vec3 fine_normal;  // pixel-scale normal: contours and shading
 };
+// Compute passes read the records as 22 floats (shaders/common/mesh_vertex_fetch.glsl).
+static_assert(sizeof(GpuVertex) == 22 * sizeof(float), "GpuVertex must stay 22 packed floats");
 
 // A seed of streamline hatching (render/hatching/hatch_streamlines.h): one of the
 // first kHatchSeeds surface samples (geometry/mesh/surface_samples.h, in their

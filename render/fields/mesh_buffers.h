@@ -64,6 +64,10 @@ public:
     void draw_creases() const;  // GL_LINES over every crease
     size_t crease_count() const { return creases_; }
 
+    // The interleaved vertex records (GpuVertex) and the triangles (three
+    // vertex indices a face, cluster order), for the compute line passes.
+    GLuint vertex_buffer() const { return vertex_buffer_; }
+    GLuint triangle_buffer() const { return triangle_buffer_; }
     size_t vertex_count() const { return vertex_count_; }
     size_t face_count() const { return face_count_; }
     size_t boundary_edge_count() const { return boundary_edges_; }

@@ -26,7 +26,9 @@ struct Attempt {
     std::string error;  // why it failed
 };
 
-// Initialises `display` and creates a current 3.3 core context on it.
+// Initialises `display` and creates a current core context on it: the
+// highest version the driver gives, 4.6 down to 3.3 (4.3 and later run the
+// compute line path, render/lines/segment_buffer.h).
 Attempt make_context(EGLDisplay display) {
     Attempt a;
     EGLint major = 0, minor = 0;
@@ -53,10 +55,13 @@ Attempt make_context(EGLDisplay display) {
         a.error = "eglBindAPI(EGL_OPENGL_API) failed";
         return a;
     }
-    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                      EGL_NONE};
-    a.context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
+    for (const GLVersion v : kCoreVersions) {
+        const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, v.major, EGL_CONTEXT_MINOR_VERSION, v.minor,
+                                          EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                          EGL_NONE};
+        a.context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
+        if (a.context != EGL_NO_CONTEXT) break;
+    }
     if (a.context == EGL_NO_CONTEXT) {
         a.error = "could not create an OpenGL 3.3 core context";
         return a;

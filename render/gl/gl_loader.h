@@ -7,6 +7,14 @@
 
 namespace kappa::render {
 
+// The core versions a context is asked for, highest first: 4.3 and later run
+// the compute line path (render/lines/segment_buffer.h), 3.3 is the least the
+// renderer needs. Drivers give exactly the version asked for or fail.
+struct GLVersion {
+    int major, minor;
+};
+inline constexpr GLVersion kCoreVersions[] = {{4, 6}, {4, 5}, {4, 4}, {4, 3}, {3, 3}};
+
 using GlProcLoader = void (*(*)(const char* name))();
 
 // Loads GL for the current context and checks that it offers OpenGL 3.3 core

@@ -16,6 +16,7 @@ const char* stage_name(GLenum type) {
         case GL_VERTEX_SHADER: return "vertex";
         case GL_GEOMETRY_SHADER: return "geometry";
         case GL_FRAGMENT_SHADER: return "fragment";
+        case GL_COMPUTE_SHADER: return "compute";
         default: return "shader";
     }
 }
@@ -29,7 +30,9 @@ std::string join_names(const std::vector<std::string>& files) {
 GLuint compile(const ShaderStage& stage) {
     // "#line 1 N" makes GL logs report "N:line" with N = index of the file
     // (0 is the version line): the error message lists the files in order.
-    std::vector<std::string> parts{"#version 330 core\n" + stage.defines};
+    // GLSL 3.30 (GL 3.3) for the drawing stages; compute passes need 4.30.
+    const char* version = stage.type == GL_COMPUTE_SHADER ? "#version 430 core\n" : "#version 330 core\n";
+    std::vector<std::string> parts{version + stage.defines};
     for (size_t i = 0; i < stage.files.size(); ++i)
         parts.push_back("#line 1 " + std::to_string(i + 1) + "\n" + shader_text(stage.files[i]) + "\n");
     std::vector<const char*> ptrs;

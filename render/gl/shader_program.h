@@ -1,6 +1,7 @@
 // A linked GLSL program built from embedded shaders/*/*.glsl files, named by
 // their room ("lines/lines_frag.glsl"). Each stage is the concatenation of one
-// or more files (shared functions first), after a "#version 330 core" line;
+// or more files (shared functions first), after a "#version 330 core" line
+// ("#version 430 core" for compute shaders);
 // compile errors name the files and carry the GL log.
 #pragma once
 
@@ -19,7 +20,7 @@
 namespace kappa::render {
 
 struct ShaderStage {
-    GLenum type;                     // GL_VERTEX_SHADER, GL_GEOMETRY_SHADER, GL_FRAGMENT_SHADER
+    GLenum type;                     // GL_VERTEX_SHADER, GL_GEOMETRY_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
     std::vector<std::string> files;  // embedded file names, concatenated in order
     std::string defines = {};        // lines inserted after #version, e.g. "#define KAPPA_HATCHING\n"
 };

@@ -22,15 +22,20 @@ std::unique_ptr<WindowContext> WindowContext::create(const Options& options) {
     if (!glfwInit())
         throw ContextError("no display (DISPLAY is not set or cannot be opened: " + g_glfw_error +
                            "); use 'kappa render' to render headless");
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // high-DPI: a window of the same physical size
     glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_DEPTH_BITS, 24);
     glfwWindowHint(GLFW_SAMPLES, 0);  // the renderer multisamples offscreen
-    GLFWwindow* window = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+    // The highest core version the driver gives (render/gl/gl_loader.h).
+    GLFWwindow* window = nullptr;
+    for (const GLVersion v : kCoreVersions) {
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, v.major);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, v.minor);
+        window = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+        if (window) break;
+    }
     if (!window) {
         const std::string reason = g_glfw_error;
         glfwTerminate();

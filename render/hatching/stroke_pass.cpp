@@ -22,7 +22,7 @@ float tapered_width(float width, float taper, float s, float total) {
 
 StrokePass::StrokePass()
     : program_({{GL_VERTEX_SHADER, {"hatching/strokes_vert.glsl"}},
-                {GL_GEOMETRY_SHADER, {"lines/line_quad.glsl", "hatching/strokes_geom.glsl"}},
+                {GL_GEOMETRY_SHADER, {"lines/segment_emit.glsl", "lines/line_quad.glsl", "hatching/strokes_geom.glsl"}},
                 {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}}) {
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &buffer_);

@@ -1,7 +1,8 @@
-// Shared by the line geometry shaders: a 3D segment becomes a screen-space
-// quad of the line width plus half a pixel of anti-aliasing margin, extended
-// by the same amount past both ends (round caps, so consecutive segments
-// join without gaps). lines_frag.glsl computes the exact coverage.
+// The geometry stage's emit_window_segment (segment_emit.glsl): a segment
+// becomes a screen-space quad of the line width plus half a pixel of
+// anti-aliasing margin, extended by the same amount past both ends (round
+// caps, so consecutive segments join without gaps). lines_frag.glsl computes
+// the exact coverage.
 //
 // Why geometry and not a fragment-shader zero test: a per-fragment test
 // |f| < w * fwidth(f) gives lines whose width follows the gradient of f (thin
@@ -12,8 +13,6 @@
 // constant width in pixels at any zoom, are continuous across triangles
 // (shared edges are cut at bit-identical points) and can be tested for
 // visibility along their centre line.
-uniform vec2 u_viewport;  // pixels
-
 out LineFragment {
     flat vec4 segment;   // end points in window pixels (x0, y0, x1, y1)
     flat vec2 depth;     // window depth [0, 1] at the end points
@@ -24,14 +23,8 @@ out LineFragment {
     flat float exterior_only; // 1: drawn only where one side is background (the exterior silhouette)
 } g_out;
 
-vec3 to_window(vec4 clip) {
-    vec3 ndc = clip.xyz / clip.w;
-    return vec3((ndc.xy * 0.5 + 0.5) * u_viewport, ndc.z * 0.5 + 0.5);
-}
-
 // Outputs are undefined after EmitVertex: every corner writes them again.
 vec4 segment_; vec2 depth_, alpha_; float tolerance_, width_, on_surface_;
-float exterior_only_ = 0.0;  // set by a geometry shader before emitting exterior-silhouette segments
 
 void emit_corner(vec2 window_xy, float window_z) {
     g_out.segment = segment_;
@@ -66,12 +59,4 @@ void emit_window_segment(vec3 p0, vec3 p1, float alpha0, float alpha1, float tol
     emit_corner(p1.xy + (dir - nrm) * r, z);
     emit_corner(p1.xy + (dir + nrm) * r, z);
     EndPrimitive();
-}
-
-// A line of the line width between two points in clip coordinates.
-uniform float u_line_width;  // pixels
-
-void emit_segment(vec4 clip0, vec4 clip1, float alpha0, float alpha1, float tolerance) {
-    if (clip0.w <= 0.0 || clip1.w <= 0.0) return;  // behind the eye
-    emit_window_segment(to_window(clip0), to_window(clip1), alpha0, alpha1, tolerance, u_line_width, false);
 }

@@ -9,8 +9,15 @@ layout(location = 0) in vec3 a_end0;      // window coordinates: pixels, depth
 layout(location = 1) in vec3 a_end1;
 layout(location = 2) in vec2 a_alpha;     // opacity at the two ends
 layout(location = 3) in float a_tolerance;  // model units, the detail scale's included
+#ifdef KAPPA_INSTANCED
+// The compute path's segments (segment_append.glsl): one instance a segment,
+// its corner from the vertex index of a four-vertex triangle strip.
+layout(location = 4) in float a_exterior;  // 1: exterior_only
+layout(location = 5) in float a_width;     // pixels
+#else
 layout(location = 4) in float a_exterior_corner;  // 4 exterior_only + corner, corner 0..3:
                                                   // (end, side) = (0,-), (0,+), (1,-), (1,+)
+#endif
 
 uniform vec2 u_viewport;          // pixels
 uniform float u_line_width;       // pixels
@@ -26,19 +33,26 @@ out LineFragment {
 } v_out;
 
 void main() {
+#ifdef KAPPA_INSTANCED
+    int corner = gl_VertexID;
+    float width = a_width;
+    v_out.exterior_only = a_exterior;
+#else
     int code = int(a_exterior_corner + 0.5);
     int corner = code - 4 * (code / 4);
-    v_out.alpha = a_alpha;
-    v_out.width = u_line_width;
-    v_out.on_surface = 0.0;
+    float width = u_line_width;
     v_out.exterior_only = code >= 4 ? 1.0 : 0.0;
+#endif
+    v_out.alpha = a_alpha;
+    v_out.width = width;
+    v_out.on_surface = 0.0;
     v_out.tolerance = a_tolerance;
     vec3 p0 = a_end0, p1 = a_end1;
     vec2 dir = p1.xy - p0.xy;
     float len = length(dir);
     dir = len > 1e-6 ? dir / len : vec2(1.0, 0.0);
     vec2 nrm = vec2(-dir.y, dir.x);
-    float r = 0.5 * u_line_width + 0.5;  // lines_frag.glsl gives no coverage farther from the centre line
+    float r = 0.5 * width + 0.5;  // lines_frag.glsl gives no coverage farther from the centre line
     v_out.segment = vec4(p0.xy, p1.xy);
     v_out.depth = vec2(p0.z, p1.z);
     float z = min(p0.z, p1.z);  // any depth inside the range: depth testing is done in lines_frag
