@@ -6,9 +6,12 @@
 #include "geometry/io/mesh_io.h"
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -103,6 +106,50 @@ glm::vec3 face_normal(const Mesh& m, size_t f) {
     return glm::normalize(glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]));
 }
 
+// The cube [-1, 1]^3: 8 corners (corner i has x, y, z = -1 or 1 by bits 0,
+// 1, 2 of i) and 12 triangles, counter-clockwise seen from outside.
+Gltf cube() {
+    Gltf g;
+    for (int i = 0; i < 8; ++i)
+        for (int a = 0; a < 3; ++a) g.positions.push_back(i >> a & 1 ? 1.0f : -1.0f);
+    g.indices = {0, 2, 3, 0, 3, 1,  4, 5, 7, 4, 7, 6,  0, 1, 5, 0, 5, 4,
+                 2, 6, 7, 2, 7, 3,  0, 4, 6, 0, 6, 2,  1, 3, 7, 1, 7, 5};
+    return g;
+}
+
+glm::vec3 face_centroid(const Mesh& m, size_t f) {
+    const Face& t = m.faces[f];
+    return (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.0f;
+}
+
+// The index of the centre nearest to face f's centroid: which instance the face belongs to.
+size_t instance_of(const Mesh& m, size_t f, const std::vector<glm::vec3>& centres) {
+    size_t best = 0;
+    for (size_t k = 1; k < centres.size(); ++k)
+        if (glm::length(face_centroid(m, f) - centres[k]) < glm::length(face_centroid(m, f) - centres[best])) best = k;
+    return best;
+}
+
+// Per instance: the signed volume enclosed by its faces (positive when they
+// are counter-clockwise seen from outside) and how many of its faces have a
+// normal pointing towards the instance's centre.
+struct Orientation {
+    std::vector<double> volume;
+    std::vector<int> inward;
+};
+Orientation orientation(const Mesh& m, const std::vector<glm::vec3>& centres) {
+    Orientation o{std::vector<double>(centres.size(), 0.0), std::vector<int>(centres.size(), 0)};
+    for (size_t f = 0; f < m.face_count(); ++f) {
+        const size_t k = instance_of(m, f, centres);
+        const Face& t = m.faces[f];
+        const glm::dvec3 a = glm::dvec3(m.positions[t[0]] - centres[k]), b = glm::dvec3(m.positions[t[1]] - centres[k]),
+                         c = glm::dvec3(m.positions[t[2]] - centres[k]);
+        o.volume[k] += glm::dot(a, glm::cross(b, c)) / 6.0;
+        if (glm::dot(face_normal(m, f), face_centroid(m, f) - centres[k]) <= 0.0f) ++o.inward[k];
+    }
+    return o;
+}
+
 std::string load_error(const std::string& name, const std::string& contents) {
     try {
         load(name, contents);
@@ -170,6 +217,107 @@ TEST_CASE("glTF: node transforms apply, parents first, and a mesh used twice is 
     // (1, 0, 0) scaled to (2, 0, 0), turned to (0, 2, 0), moved to (10, 2, 0).
     CHECK(glm::length(m.positions[1] - glm::vec3(10, 2, 0)) < 1e-5f);
     CHECK(glm::length(m.positions[4] - glm::vec3(1, 0, 5)) < 1e-5f);  // the matrix node: z + 5
+}
+
+// glTF 2.0, 3.7.2.1: "When a mesh primitive uses any triangle-based topology,
+// the determinant of the node's global transform defines the winding order of
+// that primitive": counter-clockwise if positive, clockwise if negative.
+TEST_CASE("glTF: a mirrored cube (scale -1 in x) loads with outward faces", "[io][gltf]") {
+    Gltf g = cube();
+    g.nodes = R"([{"mesh": 0, "scale": [-1, 1, 1]}])";
+    const Mesh m = load("mirrored-cube.gltf", g.json());
+    REQUIRE(m.vertex_count() == 8);
+    REQUIRE(m.face_count() == 12);
+    const Orientation o = orientation(m, {glm::vec3(0)});
+    CHECK(o.volume[0] == Approx(8.0));  // inward faces would give -8
+    CHECK(o.inward[0] == 0);
+
+    // The same through a .glb, and with the mirror in a node matrix.
+    CHECK(orientation(load("mirrored-cube.glb", g.glb()), {glm::vec3(0)}).volume[0] == Approx(8.0));
+    g.nodes = R"([{"mesh": 0, "matrix": [-1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}])";
+    CHECK(orientation(load("matrix-mirror.gltf", g.json()), {glm::vec3(0)}).volume[0] == Approx(8.0));
+}
+
+TEST_CASE("glTF: plain and mirrored instances of one mesh in a scene are all outward", "[io][gltf]") {
+    Gltf g = cube();
+    // 0: plain; 1: mirrored by its own scale; 3: mirrored by its parent's
+    // matrix (2); 5: mirrored by its parent (4) and again by its own scale,
+    // so its global transform keeps the winding.
+    g.nodes = R"([{"mesh": 0, "translation": [-3, 0, 0]},
+                  {"mesh": 0, "translation": [3, 0, 0], "scale": [-1, 1, 1]},
+                  {"matrix": [1,0,0,0, 0,1,0,0, 0,0,-1,0, 0,4,0,1], "children": [3]},
+                  {"mesh": 0},
+                  {"translation": [0, -4, 0], "scale": [-1, 1, 1], "children": [5]},
+                  {"mesh": 0, "scale": [1, -1, 1]}])";
+    g.scenes = R"("scene": 0, "scenes": [{"nodes": [0, 1, 2, 4]}])";
+    const Mesh m = load("instances.gltf", g.json());
+    REQUIRE(m.vertex_count() == 32);
+    REQUIRE(m.face_count() == 48);
+    const std::vector<glm::vec3> centres = {{-3, 0, 0}, {3, 0, 0}, {0, 4, 0}, {0, -4, 0}};
+    const Orientation o = orientation(m, centres);
+    for (size_t k = 0; k < centres.size(); ++k) {
+        INFO("instance " << k);
+        CHECK(o.volume[k] == Approx(8.0));
+        CHECK(o.inward[k] == 0);
+    }
+}
+
+TEST_CASE("glTF: rotation with non-uniform scale places every vertex and keeps faces outward", "[io][gltf]") {
+    Gltf g = cube();
+    // Both nodes: translation t, rotation of 0.7 rad about (1, 2, 3), scale s;
+    // node 0's scale has one negative factor (a mirror), node 1's none.
+    const double angle = 0.7, half = angle / 2;
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(1, 2, 3));
+    const glm::dvec3 q = axis * std::sin(half);
+    char rotation[160];
+    std::snprintf(rotation, sizeof rotation, "[%.17g, %.17g, %.17g, %.17g]", q.x, q.y, q.z, std::cos(half));
+    g.nodes = std::string(R"([{"mesh": 0, "translation": [1, 2, 3], "scale": [2, -0.5, 3], "rotation": )") +
+              rotation + R"(}, {"mesh": 0, "translation": [20, 2, 3], "scale": [2, 0.5, 3], "rotation": )" +
+              rotation + "}]";
+    g.scenes = R"("scene": 0, "scenes": [{"nodes": [0, 1]}])";
+    const Mesh m = load("rotated.gltf", g.json());
+    REQUIRE(m.vertex_count() == 16);
+    REQUIRE(m.face_count() == 24);
+
+    // Rodrigues' rotation matrix, written out independently of the reader's quaternion code.
+    const double c = std::cos(angle), s = std::sin(angle);
+    const glm::dmat3 K(0, axis.z, -axis.y, -axis.z, 0, axis.x, axis.y, -axis.x, 0);  // columns: K v = axis x v
+    const glm::dmat3 R = glm::dmat3(1.0) + s * K + (1 - c) * K * K;
+    const glm::dvec3 translations[2] = {{1, 2, 3}, {20, 2, 3}};
+    const glm::dvec3 scales[2] = {{2, -0.5, 3}, {2, 0.5, 3}};
+    for (int node = 0; node < 2; ++node) {
+        INFO("node " << node);
+        const glm::dmat3 M = R * glm::dmat3(scales[node].x, 0, 0, 0, scales[node].y, 0, 0, 0, scales[node].z);
+        // Every corner at t + R S p, within float rounding.
+        for (int i = 0; i < 8; ++i) {
+            const glm::dvec3 p(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+            const glm::vec3 expected(translations[node] + M * p);
+            double nearest = 1e30;
+            for (const glm::vec3& v : m.positions) nearest = std::min(nearest, double(glm::length(v - expected)));
+            INFO("corner " << i);
+            CHECK(nearest < 1e-5);
+        }
+        // Outward: volume 8 |det M|, and each face normal is the inverse
+        // transpose of M applied to the untransformed cube's outward normal.
+        const Orientation o = orientation(m, {glm::vec3(translations[0]), glm::vec3(translations[1])});
+        CHECK(o.volume[size_t(node)] == Approx(8.0 * std::abs(glm::determinant(M))));
+        CHECK(o.inward[size_t(node)] == 0);
+        const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(M));
+        for (size_t f = 0; f < m.face_count(); ++f) {
+            if (instance_of(m, f, {glm::vec3(translations[0]), glm::vec3(translations[1])}) != size_t(node)) continue;
+            // The untransformed face: its centroid has one coordinate at +-1
+            // (the face's side), the others at +-1/3.
+            const glm::dvec3 local = glm::inverse(M) * (glm::dvec3(face_centroid(m, f)) - translations[node]);
+            int side = 0;
+            for (int a = 1; a < 3; ++a)
+                if (std::abs(local[a]) > std::abs(local[side])) side = a;
+            glm::dvec3 n0(0);
+            n0[side] = local[side] > 0 ? 1 : -1;
+            const glm::dvec3 expected = glm::normalize(normal_matrix * n0);
+            INFO("face " << f);
+            CHECK(glm::dot(glm::dvec3(face_normal(m, f)), expected) > 0.99999);
+        }
+    }
 }
 
 TEST_CASE("glTF: the default scene is the one named by scene", "[io][gltf]") {

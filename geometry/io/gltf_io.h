@@ -5,8 +5,13 @@
 // indexed or not) of the nodes of the default scene (scene 0 when none is
 // named; every mesh once, untransformed, when the file has no scene) is
 // read, with the node transforms applied (matrix, or translation, rotation
-// and scale; parents first). Points and lines are skipped; morph targets,
-// skins and materials are ignored. Corners are welded like STL's
+// and scale; parents first). Triangles of a node whose global transform has
+// a negative determinant (a mirror, e.g. scale [-1, 1, 1]) are reversed, as
+// the spec's winding rule asks, so that faces stay counter-clockwise seen
+// from outside. NORMAL attributes are not read: kappa's normals come from
+// the transformed faces, so they are what the inverse transpose of the
+// transform would give, under any scale. Points and lines are skipped; morph
+// targets, skins and materials are ignored. Corners are welded like STL's
 // (vertex_weld.h): exactly equal positions become one vertex, in order of
 // first occurrence. Sparse or non-float positions, indices out of range,
 // accessors outside their buffers and a scene with no triangle are errors,

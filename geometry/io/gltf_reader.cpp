@@ -7,7 +7,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -15,6 +17,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <utility>
 
 #include <sys/stat.h>
 
@@ -133,7 +136,14 @@ void add_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
         for (size_t i = 0; i < index.size(); ++i) index[i] = uint32_t(i);
     }
 
-    auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) { corners.insert(corners.end(), {p[a], p[b], p[c]}); };
+    // glTF 2.0, 3.7.2.1: a global transform with a negative determinant (a
+    // mirror) makes the primitive's front faces clockwise; reversing each
+    // triangle turns them back to counter-clockwise, so normals stay outward.
+    const bool mirrored = glm::determinant(glm::mat3(transform)) < 0.0f;
+    auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
+        if (mirrored) std::swap(b, c);
+        corners.insert(corners.end(), {p[a], p[b], p[c]});
+    };
     if (mode == TINYGLTF_MODE_TRIANGLES) {
         for (size_t i = 0; i + 2 < index.size(); i += 3) triangle(index[i], index[i + 1], index[i + 2]);
     } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {  // every other triangle flips its order
