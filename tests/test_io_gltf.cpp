@@ -40,34 +40,38 @@ std::string bytes_of(const std::vector<T>& v) {
     return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 
-// One mesh with one primitive: positions (float VEC3), optional uint16
-// indices, a mode; `nodes` and `scenes` JSON given by the test (the mesh is 0).
+// One mesh with one primitive: positions (float VEC3), optional uint16 (or
+// uint32: wide_indices) indices, a mode; `nodes` and `scenes` JSON given by the test (the mesh is 0).
 struct Gltf {
     std::vector<float> positions;
     std::vector<uint16_t> indices;
+    std::vector<uint32_t> wide_indices;
     int mode = 4;
     std::string nodes = R"([{"mesh": 0}])";
     std::string scenes = R"("scene": 0, "scenes": [{"nodes": [0]}])";
     std::string extra_accessor;  // replaces the indices accessor when set
 
     // The JSON, with the buffer as a data URI (uri empty: for a .glb BIN chunk).
+    std::string index_bytes() const { return bytes_of(indices) + bytes_of(wide_indices); }
+    size_t index_count() const { return indices.size() + wide_indices.size(); }
+
     std::string json(bool embedded = true) const {
-        const std::string buffer = bytes_of(positions) + bytes_of(indices);
+        const std::string buffer = bytes_of(positions) + index_bytes();
         const size_t vertex_bytes = positions.size() * 4;
         float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
         for (size_t i = 0; i < positions.size(); ++i)
             lo[i % 3] = std::min(lo[i % 3], positions[i]), hi[i % 3] = std::max(hi[i % 3], positions[i]);
         std::string j = R"({"asset": {"version": "2.0"}, )" + scenes + R"(, "nodes": )" + nodes + ", ";
         j += R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": )" + std::to_string(mode);
-        if (!indices.empty() || !extra_accessor.empty()) j += R"(, "indices": 1)";
+        if (index_count() || !extra_accessor.empty()) j += R"(, "indices": 1)";
         j += "}]}], ";
         j += R"("buffers": [{"byteLength": )" + std::to_string(buffer.size());
         if (embedded) j += R"(, "uri": "data:application/octet-stream;base64,)" + base64(buffer) + "\"";
         j += "}], ";
         j += R"("bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" + std::to_string(vertex_bytes) + "}";
-        if (!indices.empty())
+        if (index_count())
             j += R"(, {"buffer": 0, "byteOffset": )" + std::to_string(vertex_bytes) + R"(, "byteLength": )" +
-                 std::to_string(indices.size() * 2) + "}";
+                 std::to_string(index_bytes().size()) + "}";
         j += "], ";
         char bounds[200];
         std::snprintf(bounds, sizeof bounds, R"("min": [%g, %g, %g], "max": [%g, %g, %g])", lo[0], lo[1], lo[2],
@@ -75,16 +79,16 @@ struct Gltf {
         j += R"("accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": )" +
              std::to_string(positions.size() / 3) + ", " + bounds + "}";
         if (!extra_accessor.empty()) j += ", " + extra_accessor;
-        else if (!indices.empty())
-            j += R"(, {"bufferView": 1, "componentType": 5123, "type": "SCALAR", "count": )" +
-                 std::to_string(indices.size()) + "}";
+        else if (index_count())
+            j += R"(, {"bufferView": 1, "componentType": )" + std::string(indices.empty() ? "5125" : "5123") +
+                 R"(, "type": "SCALAR", "count": )" + std::to_string(index_count()) + "}";
         j += "]}";
         return j;
     }
 
     // The same as a .glb: header, JSON chunk, BIN chunk (4-byte aligned).
     std::string glb() const {
-        std::string j = json(false), bin = bytes_of(positions) + bytes_of(indices);
+        std::string j = json(false), bin = bytes_of(positions) + index_bytes();
         while (j.size() % 4) j += ' ';
         while (bin.size() % 4) bin += '\0';
         auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
@@ -389,4 +393,75 @@ TEST_CASE("glTF: bad files are one-line errors naming the file", "[io][gltf]") {
     const std::string json = load_error("broken.gltf", R"({"asset": {"version": "2.0"}, "meshes": [)");
     CHECK(json.find("broken.gltf: glTF") != std::string::npos);
     for (const std::string& e : {range, json}) CHECK(std::count(e.begin(), e.end(), '\n') == 0);
+}
+
+TEST_CASE("glTF: indices and counts beyond the vertices or whose byte size overflows are errors quoting them",
+          "[io][gltf]") {
+    // The one-line error "PATH: problem" loading `text` as `name`, with `fragment` in it.
+    auto check_error = [](const std::string& name, const std::string& text, const std::string& fragment) {
+        const std::string e = load_error(name, text);
+        INFO("message: " << e);
+        CHECK(e.find("/" + name + ": ") != std::string::npos);
+        CHECK(e.find(fragment) != std::string::npos);
+        CHECK(std::count(e.begin(), e.end(), '\n') == 0);
+    };
+    Gltf triangle;
+    triangle.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const std::string huge = "4611686018427387905";  // 2^62 + 1: times 4 or 12, 0 modulo 2^64
+
+    SECTION("a uint32 index past INT_MAX or past the vertex count, as written") {
+        Gltf wide = triangle;
+        for (uint32_t k : {3u, 0x80000000u, 0xffffffffu}) {
+            wide.wide_indices = {0, k, 1};
+            check_error("wide.gltf", wide.json(),
+                        "index " + std::to_string(k) + " out of range (POSITION has 3 vertices)");
+        }
+        wide.wide_indices = {0, 1, 2};
+        CHECK(load("wide.gltf", wide.json()).face_count() == 1);
+    }
+    // Counts whose byte size, (count - 1) * stride + element size, overflows
+    // 64 bits: it wrapped round to a few bytes inside the buffer and passed
+    // the bounds check (then std::length_error from a vector of 2^62 elements).
+    SECTION("a POSITION count whose byte size overflows") {
+        std::string text = triangle.json();
+        const size_t at = text.find(R"("count": 3)");
+        REQUIRE(at != std::string::npos);
+        text.replace(at, 10, R"("count": )" + huge);
+        check_error("positions.gltf", text, "POSITION: accessor of " + huge + " elements reaches outside its buffer");
+    }
+    SECTION("an index count whose byte size overflows") {
+        Gltf g = triangle;
+        g.extra_accessor = R"({"bufferView": 0, "componentType": 5125, "type": "SCALAR", "count": )" + huge + "}";
+        check_error("indices.gltf", g.json(), "indices: accessor of " + huge + " elements reaches outside its buffer");
+    }
+    SECTION("byte offsets whose sum wraps round") {
+        Gltf g = triangle;
+        g.positions.insert(g.positions.end(), {0, 0, 1});
+        g.extra_accessor = R"({"bufferView": 0, "byteOffset": 18446744073709551612, "componentType": 5125, )"
+                           R"("type": "SCALAR", "count": 3})";
+        check_error("offset.gltf", g.json(), "indices: accessor of 3 elements reaches outside its buffer");
+        // A buffer view's byteOffset plus its accessor's wrapping round to the
+        // buffer's start: the indices were read from the positions' bytes.
+        Gltf v = triangle;
+        v.extra_accessor = R"({"bufferView": 1, "byteOffset": 8, "componentType": 5125, "type": "SCALAR", "count": 3})";
+        std::string text = v.json();
+        const size_t views_end = text.find(R"(], "accessors")");
+        REQUIRE(views_end != std::string::npos);
+        text.insert(views_end, R"(, {"buffer": 0, "byteOffset": 18446744073709551608, "byteLength": 36})");
+        check_error("view.gltf", text, "indices: accessor of 3 elements reaches outside its buffer");
+    }
+    SECTION("a file of 4 GiB or more") {
+        // tinygltf takes the size as a 32-bit unsigned: it was cut to its low
+        // 32 bits and the file read as if it ended there. (The size here is
+        // not backed by memory: the reader must refuse it before reading.)
+        const std::string small = triangle.json();
+        const size_t size = (size_t(1) << 32) + small.size();
+        try {
+            read_gltf(small.data(), size, "big.gltf");
+            FAIL("a 4 GiB glTF file was read");
+        } catch (const MeshLoadError& e) {
+            CHECK(std::string(e.what()) == "big.gltf: glTF: the file has " + std::to_string(size) +
+                                               " bytes, more than tinygltf can read (4 GiB - 1)");
+        }
+    }
 }

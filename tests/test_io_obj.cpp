@@ -54,3 +54,28 @@ TEST_CASE("OBJ: polygons up to 255 corners, larger ones are a clear error", "[io
     // tinyobjloader stores corner counts in a byte.
     REQUIRE_LOAD_ERROR(obj_from(polygon_file(256)), "test.obj", "more than 255 corners");
 }
+
+TEST_CASE("OBJ: vertex indices beyond 32 bits are errors quoting the index as written", "[io][obj]") {
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    // tinyobjloader reads indices with atoi: each of these wrapped, to an
+    // index out of range (99999999999 -> 1215752190) or, worse, to a valid
+    // one (4294967298 -> 2; 99999999999999999999 -> -1, the last vertex;
+    // -4294967297 -> -1), which loaded a wrong face without a word.
+    for (const std::string index : {"99999999999", "4294967298", "99999999999999999999", "2147483648", "-99999999999",
+                                    "-4294967297", "-99999999999999999999", "-2147483649"}) {
+        INFO("index " << index);
+        REQUIRE_LOAD_ERROR(obj_from(triangle + "f 1 2 " + index + "\n"), "test.obj", "index " + index);
+        REQUIRE_LOAD_ERROR(obj_from(triangle + "vt 0 0\nf 1/1 " + index + "/1 3/1\n"), "test.obj", "index " + index);
+        REQUIRE_LOAD_ERROR(obj_from(triangle + "f 1 2 3\nf 3 2 1 " + index + "\n"), "test.obj", "line 5: face 1");
+    }
+    REQUIRE_LOAD_ERROR(obj_from(triangle + "f 1 2 99999999999\n"), "test.obj",
+                       "line 4: face 0 refers to vertex 99999999998 but the file has 3 vertices "
+                       "(index 99999999999 as written)");
+    // Within range of int: as before, with the index as written.
+    REQUIRE_LOAD_ERROR(obj_from(triangle + "f 1 2 4\n"), "test.obj",
+                       "face 0 refers to vertex 3 but the file has 3 vertices (index 4 as written)");
+    REQUIRE_LOAD_ERROR(obj_from(triangle + "f +1 2 -4\n"), "test.obj", "refers to vertex -1");
+    // Forward references, relative and explicit '+' indices still load.
+    CHECK(obj_from("f 1 2 3\n" + triangle).faces == std::vector<Face>{{0, 1, 2}});
+    CHECK(obj_from(triangle + "f -3 +2 -1\nv 5 5 5\nf -1 1 -2\n").faces == std::vector<Face>{{0, 1, 2}, {3, 0, 2}});
+}

@@ -67,3 +67,27 @@ TEST_CASE("OFF: unsupported variants are clear errors", "[io][off]") {
     REQUIRE_LOAD_ERROR(off_from("nOFF\n2\n1 0 0\n1 2\n"), "test.off", "3-D");
     REQUIRE_LOAD_ERROR(off_from("OFF BINARY\n"), "test.off", "binary OFF");
 }
+
+TEST_CASE("OFF: counts and indices beyond their integer types are errors quoting them as written", "[io][off]") {
+    // 4nOFF adds a homogeneous coordinate to the dimension written: the
+    // largest uint64 plus one wrapped to 0 ("this one has dimension 0").
+    REQUIRE_LOAD_ERROR(off_from("4nOFF\n18446744073709551615\n1 0 0\n1 2 3 4\n"), "test.off",
+                       "dimension 18446744073709551615 + 1");
+    REQUIRE_LOAD_ERROR(off_from("nOFF\n18446744073709551616\n1 0 0\n1 2 3\n"), "test.off",
+                       "'18446744073709551616'");
+    // Counts: beyond uint64, and beyond the 32-bit vertex numbers of a mesh.
+    REQUIRE_LOAD_ERROR(off_from("OFF\n99999999999999999999 1 0\n0 0 0\n"), "test.off", "'99999999999999999999'");
+    REQUIRE_LOAD_ERROR(off_from("OFF\n3 99999999999999999999 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "test.off",
+                       "'99999999999999999999'");
+    REQUIRE_LOAD_ERROR(off_from("OFF\n4294967296 1 0\n0 0 0\n"), "test.off", "4294967296");
+    // Face indices, and the number of vertices of a face.
+    const std::string triangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+    REQUIRE_LOAD_ERROR(off_from(triangle + "3 0 1 99999999999\n"), "test.off",
+                       "face 0 refers to vertex 99999999999 but the file has 3 vertices");
+    REQUIRE_LOAD_ERROR(off_from(triangle + "3 0 1 4294967296\n"), "test.off", "refers to vertex 4294967296");
+    REQUIRE_LOAD_ERROR(off_from(triangle + "3 0 1 -4294967297\n"), "test.off", "refers to vertex -4294967297");
+    REQUIRE_LOAD_ERROR(off_from(triangle + "3 0 1 99999999999999999999\n"), "test.off", "'99999999999999999999'");
+    REQUIRE_LOAD_ERROR(off_from(triangle + "18446744073709551615 0 1 2\n"), "test.off", "18446744073709551615");
+    REQUIRE_LOAD_ERROR(off_from(triangle + "18446744073709551616 0 1 2\n"), "test.off", "'18446744073709551616'");
+    REQUIRE_LOAD_ERROR(off_from(triangle + "-3 0 1 2\n"), "test.off", "'-3'");
+}

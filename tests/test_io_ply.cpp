@@ -316,3 +316,77 @@ TEST_CASE("PLY: many triangles read by all threads, and what makes the reader fa
     }
     set_thread_count(0);
 }
+
+TEST_CASE("PLY: indices and counts beyond their types or the vertices are errors quoting them as written",
+          "[io][ply]") {
+    const std::string xyz = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    // Three vertices, then one face element of the given list type whose
+    // single item is the count and indices given (in the file's encoding).
+    auto file = [&](Encoding e, const std::string& list_types, auto count, auto... indices) {
+        Body body(e);
+        for (int i = 0; i < 9; ++i) body(float(i == 3 || i == 7));
+        body.end_item()(count);
+        (body(indices), ...);
+        body.end_item();
+        return header(e, xyz + "element face 1\nproperty list " + list_types + " vertex_indices\n") + body.str();
+    };
+    const std::string beyond = " but the file has 3 vertices";
+    for (Encoding e : {Encoding::Ascii, Encoding::Little, Encoding::Big}) {
+        INFO(format_name(e));
+        // uint32 indices past INT_MAX and past the vertex count: the
+        // little-endian ones take the fast path (triangles and polygons).
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "uchar uint", uint8_t(3), 0u, 1u, 0x80000000u)), "test.ply",
+                           "face 0 refers to vertex 2147483648" + beyond);
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "uchar uint", uint8_t(3), 0u, 0xffffffffu, 1u)), "test.ply",
+                           "face 0 refers to vertex 4294967295" + beyond);
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "uchar uint", uint8_t(4), 0u, 1u, 2u, 3000000000u)), "test.ply",
+                           "face 0 refers to vertex 3000000000" + beyond);
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "uchar int", uint8_t(3), 0, 1, int32_t(0x80000000u))), "test.ply",
+                           "face 0 refers to vertex -2147483648" + beyond);
+        // A list count larger than the rest of the file, named as written.
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "uint int", 0xffffffffu, 0, 1, 2)), "test.ply",
+                           "a list of 4294967295 values");
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "int int", int32_t(-5), 0, 1, 2)), "test.ply", "negative list length -5");
+        // Float indices that are integers beyond 64 bits, or not integers.
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "uchar double", uint8_t(3), 0.0, 1.0, 1e20)), "test.ply",
+                           e == Encoding::Ascii ? "'1e+20'" : "value 1e+20");
+        REQUIRE_LOAD_ERROR(ply_from(file(e, "uchar double", uint8_t(3), 0.0, 1.0, 2.5)), "test.ply",
+                           e == Encoding::Ascii ? "'2.5'" : "value 2.5");
+    }
+    // ASCII: indices and counts as written, however long.
+    const std::string ascii =
+        header(Encoding::Ascii, xyz + "element face 1\nproperty list uchar int vertex_indices\n") +
+        "0 0 0\n1 0 0\n0 1 0\n";
+    REQUIRE_LOAD_ERROR(ply_from(ascii + "3 0 1 99999999999\n"), "test.ply",
+                       "face 0 refers to vertex 99999999999" + beyond);
+    REQUIRE_LOAD_ERROR(ply_from(ascii + "3 0 1 99999999999999999999\n"), "test.ply", "'99999999999999999999'");
+    REQUIRE_LOAD_ERROR(ply_from(ascii + "3 0 1 -99999999999999999999\n"), "test.ply", "'-99999999999999999999'");
+    REQUIRE_LOAD_ERROR(ply_from(ascii + "99999999999 0 1 2\n"), "test.ply", "a list of 99999999999 values");
+    REQUIRE_LOAD_ERROR(ply_from(ascii + "99999999999999999999 0 1 2\n"), "test.ply", "'99999999999999999999'");
+    // Header counts beyond uint64, and beyond the 32-bit vertex numbers.
+    REQUIRE_LOAD_ERROR(ply_from(header(Encoding::Ascii, xyz + "element face 18446744073709551616\n"
+                                                              "property list uchar int vertex_indices\n")),
+                       "test.ply", "'element face 18446744073709551616'");
+    REQUIRE_LOAD_ERROR(ply_from(header(Encoding::Little, "element vertex 4294967296\nproperty float x\n"
+                                                         "property float y\nproperty float z\n")),
+                       "test.ply", "4294967296");
+}
+
+TEST_CASE("PLY: a uint32 index past INT_MAX among many triangles (the parallel path) names its face", "[io][ply]") {
+    const int n = 70000;
+    Bytes b;
+    b.text(header(Encoding::Little, "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                                    "element face " + std::to_string(n) +
+                                        "\nproperty list uchar uint vertex_indices\n"));
+    for (const glm::vec3& p : kSquare) b.le(p.x).le(p.y).le(p.z);
+    for (int i = 0; i < n; ++i) {
+        b.le(uint8_t(3)).le(uint32_t(i % 4));
+        b.le(uint32_t(i == 45678 ? 0x80000001u : (i + 1) % 4)).le(uint32_t((i + 2) % 4));
+    }
+    for (unsigned threads : {1u, 2u}) {
+        set_thread_count(threads);
+        REQUIRE_LOAD_ERROR(ply_from(b.str()), "test.ply",
+                           "face 45678 refers to vertex 2147483649 but the file has 4 vertices");
+    }
+    set_thread_count(0);
+}

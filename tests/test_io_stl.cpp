@@ -73,3 +73,19 @@ TEST_CASE("STL: load_mesh uses the size rule for .stl files and sniffing without
     check_square(load_mesh(dir + "/a.STL"));
     check_square(load_mesh(dir + "/noextension"));
 }
+
+TEST_CASE("STL: a binary triangle count whose byte size overflows 32 bits is an error quoting it", "[io][stl]") {
+    // One triangle (134 bytes) declaring 2^31 + 1 triangles: 84 + 50 n is
+    // 134 modulo 2^32, so a size computed in 32 bits would take the file
+    // for binary STL of that many triangles.
+    Bytes b;
+    b.text(std::string(80, ' ')).le(uint32_t(0x80000001));
+    for (int k = 0; k < 12; ++k) b.le(float(k % 3 == 0));
+    b.le(uint16_t(0));
+    REQUIRE(b.str().size() == 134);
+    REQUIRE_LOAD_ERROR(stl_from(b.str()), "test.stl",
+                       "declares 2147483649 triangles (107374182534 bytes) but the file has 134 bytes");
+    // The largest count.
+    std::string largest = Bytes().text(std::string(80, ' ')).le(uint32_t(0xffffffff)).str() + std::string(50, '\0');
+    REQUIRE_LOAD_ERROR(stl_from(largest), "test.stl", "declares 4294967295 triangles (214748364834 bytes)");
+}

@@ -17,6 +17,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <utility>
 
 #include <sys/stat.h>
@@ -61,12 +62,18 @@ AccessorView view_of(const tinygltf::Model& model, int index, size_t element_siz
         io::fail_load(name, std::string(what) + ": buffer view without buffer");
     const std::vector<unsigned char>& data = model.buffers[size_t(bv.buffer)].data;
     v.stride = bv.byteStride ? bv.byteStride : element_size;
-    const size_t begin = bv.byteOffset + a.byteOffset;
     // The last element must end inside both the buffer view and the buffer.
-    const size_t end = begin + (a.count - 1) * v.stride + element_size;
-    if (v.stride < element_size || a.byteOffset + (a.count - 1) * v.stride + element_size > bv.byteLength ||
-        end > data.size() || end < begin)
-        io::fail_load(name, std::string(what) + ": accessor reaches outside its buffer");
+    // Counts and offsets are any 64-bit values in the file: every sum and
+    // product is checked, so that none can wrap round into the buffer.
+    size_t span = 0, begin = 0, end = 0;  // span: the accessor's bytes
+    const bool inside = v.stride >= element_size && !__builtin_mul_overflow(a.count - 1, v.stride, &span) &&
+                        !__builtin_add_overflow(span, element_size, &span) && a.byteOffset <= bv.byteLength &&
+                        span <= bv.byteLength - a.byteOffset &&
+                        !__builtin_add_overflow(bv.byteOffset, a.byteOffset, &begin) &&
+                        !__builtin_add_overflow(begin, span, &end) && end <= data.size();
+    if (!inside)
+        io::fail_load(name, std::string(what) + ": accessor of " + std::to_string(a.count) +
+                                " elements reaches outside its buffer");
     v.base = data.data() + begin;
     return v;
 }
@@ -128,7 +135,9 @@ void add_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim
             if (size == 1) k = *iv.at(i);
             else if (size == 2) { uint16_t s; std::memcpy(&s, iv.at(i), 2); k = s; }
             else std::memcpy(&k, iv.at(i), 4);
-            if (k >= p.size()) io::fail_load(name, "index " + std::to_string(k) + " out of range");
+            if (k >= p.size())
+                io::fail_load(name, "index " + std::to_string(k) + " out of range (POSITION has " +
+                                        std::to_string(p.size()) + " vertices)");
             index[i] = k;
         }
     } else {
@@ -190,6 +199,10 @@ bool no_writes(std::string* error, const std::string&, const std::vector<unsigne
 }  // namespace
 
 Mesh read_gltf(const char* data, size_t size, const std::string& name) {
+    // tinygltf takes the size as a 32-bit unsigned: a larger one would be cut.
+    if (size > std::numeric_limits<unsigned>::max())
+        io::fail_load(name, "glTF: the file has " + std::to_string(size) +
+                                " bytes, more than tinygltf can read (4 GiB - 1)");
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(no_images, nullptr);
     loader.SetFsCallbacks({regular_file, path_as_is, read_whole_file, no_writes, nullptr});

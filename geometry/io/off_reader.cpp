@@ -3,6 +3,7 @@
 #include "mesh_assembly.h"
 #include "text_cursor.h"
 
+#include <limits>
 #include <vector>
 
 namespace kappa {
@@ -116,11 +117,12 @@ Mesh read_off(const char* data, size_t size, const std::string& name) {
     } else if (!(first[0] >= '0' && first[0] <= '9')) {
         fail_load(name, "not an OFF file (expected the keyword OFF, found " + quoted(first) + ")");
     }
-    uint64_t dimension = kw.n_dim ? tokens.number<uint64_t>("the dimension of nOFF") : 3;
-    if (kw.four_d) dimension += 1;
-    if (dimension != 3)
-        fail_load(name, "only 3-D OFF files are supported (this one has dimension " +
-                            std::to_string(dimension) + ")");
+    // The dimension: 3, or nOFF's as written; 4 adds a homogeneous coordinate
+    // (compared as written: the largest uint64 plus one would wrap to 0).
+    const uint64_t dimension = kw.n_dim ? tokens.number<uint64_t>("the dimension of nOFF") : 3;
+    if (dimension != (kw.four_d ? 2 : 3))
+        fail_load(name, "only 3-D OFF files are supported (this one has dimension " + std::to_string(dimension) +
+                            (kw.four_d ? " + 1)" : ")"));
 
     uint64_t nv = tokens.number<uint64_t>("the vertex count");
     uint64_t nf = tokens.number<uint64_t>("the face count");
@@ -133,6 +135,9 @@ Mesh read_off(const char* data, size_t size, const std::string& name) {
         fail_load(name, "header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
                             " faces but the file has only " + std::to_string(size) +
                             " bytes (truncated or corrupt)");
+    // Faces hold 32-bit vertex numbers, as in PLY (only files over 24 GiB get here).
+    if (nv > std::numeric_limits<uint32_t>::max())
+        fail_load(name, "too many vertices (" + std::to_string(nv) + ")");
 
     Mesh mesh;
     mesh.positions.resize(size_t(nv));

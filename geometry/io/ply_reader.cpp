@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <limits>
 
 namespace kappa {
@@ -40,9 +41,12 @@ struct ReadContext {
     size_t vertex_count = 0;
 };
 
-[[noreturn]] void fail_truncated(const ReadContext& ctx) {
+// list_length: the length of a list that does not fit in the rest of the
+// file, as written (named in the message), or -1.
+[[noreturn]] void fail_truncated(const ReadContext& ctx, int64_t list_length = -1) {
     fail_load(ctx.name, "unexpected end of file in element " + quoted(ctx.element->name) + " (item " +
                             std::to_string(ctx.item) + " of " + std::to_string(ctx.element->count) +
+                            (list_length >= 0 ? ", a list of " + std::to_string(list_length) + " values" : "") +
                             "): the file is truncated or its counts are wrong");
 }
 
@@ -52,9 +56,14 @@ struct ReadContext {
 }
 
 // Turns a failed read into the error message of its encoding.
-void check(ReadStatus status, const ReadContext& ctx, const BinarySource&) {
+void check(ReadStatus status, const ReadContext& ctx, const BinarySource& source) {
     if (status == ReadStatus::EndOfData) fail_truncated(ctx);
-    if (status == ReadStatus::BadValue) fail_bad_value(ctx, "non-integer value where an integer is required");
+    if (status == ReadStatus::BadValue) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%.17g", source.bad_value());
+        fail_bad_value(ctx, std::string("value ") + value +
+                                " where an integer is required (not an integer, or beyond 64 bits)");
+    }
 }
 
 void check(ReadStatus status, const ReadContext& ctx, const AsciiSource& source) {
@@ -86,7 +95,7 @@ void read_element(Source& source, const ElementPlan& plan, ReadContext& ctx, OnI
             int64_t n = 0;
             check(source.integer(p.count_type, n), ctx, source);
             if (n < 0) fail_bad_value(ctx, "negative list length " + std::to_string(n));
-            if (uint64_t(n) > source.max_list_length(p.type)) fail_truncated(ctx);
+            if (uint64_t(n) > source.max_list_length(p.type)) fail_truncated(ctx, n);
             if (int(k) != plan.index_list) {
                 check(source.skip(p.type, uint64_t(n)), ctx, source);
                 continue;

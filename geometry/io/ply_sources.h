@@ -66,13 +66,14 @@ public:
             case PlyType::UInt16: out = load<uint16_t>(); return ReadStatus::Ok;
             case PlyType::Int32: out = load<int32_t>(); return ReadStatus::Ok;
             case PlyType::UInt32: out = load<uint32_t>(); return ReadStatus::Ok;
-            case PlyType::Float32:
-                return double_to_int64(load<float>(), out) ? ReadStatus::Ok : ReadStatus::BadValue;
-            case PlyType::Float64:
-                return double_to_int64(load<double>(), out) ? ReadStatus::Ok : ReadStatus::BadValue;
+            case PlyType::Float32: return float_to_integer(load<float>(), out);
+            case PlyType::Float64: return float_to_integer(load<double>(), out);
         }
         return ReadStatus::BadValue;
     }
+
+    // The value integer() last refused (for the message).
+    double bad_value() const { return bad_value_; }
 
     ReadStatus skip(PlyType type, uint64_t n) {
         uint64_t size = ply_type_size(type);
@@ -84,6 +85,12 @@ public:
     uint64_t max_list_length(PlyType type) const { return uint64_t(end_ - pos_) / ply_type_size(type); }
 
 private:
+    ReadStatus float_to_integer(double v, int64_t& out) {
+        if (double_to_int64(v, out)) return ReadStatus::Ok;
+        bad_value_ = v;
+        return ReadStatus::BadValue;
+    }
+
     template <typename T>
     T load() {
         T value;
@@ -95,6 +102,7 @@ private:
     const char* pos_;
     const char* end_;
     bool swap_;
+    double bad_value_ = 0;
 };
 
 // ASCII bodies are read as a stream of whitespace-separated tokens (line
