@@ -7,11 +7,14 @@
 
 #include "geometry/view/default_view.h"
 #include "render/camera/camera.h"
+#include "render/image/ink_agreement.h"
 #include "render/image/png_writer.h"
+#include "geometry/io/mesh_io.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -348,7 +351,7 @@ double outline_inked(const std::string& mesh, const std::string& dir, const std:
         for (int x = 0; x < mask.width; ++x) {
             if (!object(x, y) || (object(x - 1, y) && object(x + 1, y) && object(x, y - 1) && object(x, y + 1))) continue;
             ++outline;
-            inked += ink_within(lines, {x + 0.5f, y + 0.5f}, 2.0f);
+            inked += ink_within(lines, glm::vec2(x + 0.5f, y + 0.5f), 2.0f);
         }
     return outline ? double(inked) / double(outline) : 0.0;
 }
@@ -487,7 +490,7 @@ TEST_CASE("Lines silhouette: the whole exterior outline and no interior contour"
             }
             if (object(x, y) && near_background(x, y, 1)) {
                 ++outline;
-                outline_inked += ink_within(sil, {x + 0.5f, y + 0.5f}, 2.0f);
+                outline_inked += ink_within(sil, glm::vec2(x + 0.5f, y + 0.5f), 2.0f);
             }
         }
     INFO("outline " << outline << " px, inked " << outline_inked << "; silhouette ink " << ink << ", away from the "
@@ -515,7 +518,136 @@ TEST_CASE("kappa render --estimator colours the surface with that estimator's ow
         CHECK(other.pixels != paper.pixels);       // the colours come from another estimate
         CHECK(other.at(48, 48).a == 255);          // and the model is drawn
     }
+    // The colours themselves: on green paper (no colour of the map is
+    // green) the model's pixels decode to k1 / range in [-1, 1]
+    // (shaders/common/colormap.glsl: white to red (0.80, 0.14, 0.12) for
+    // positive values, white to blue (0.19, 0.34, 0.80) for negative ones).
+    // Every estimator sees the same bumpy sphere: the same sign where the
+    // default's value is clear, and close values (each map is scaled by its
+    // own robust range, so the scale matches too).
+    auto decode = [&](const std::string& estimator, std::vector<float>& value) {
+        const std::string out = dir + "/green-" + estimator + ".png";
+        const auto r = test::run_command(kappa_render("-o " + out + " --size 128x128 --colormap k1 --lines none "
+                                                      "--shading none --background '#00ff00' -q --detail off "
+                                                      "--estimator " + estimator));
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+        const render::Image image = render::read_png(out);
+        auto paper_at = [&](int x, int y) {
+            const render::Rgba c = image.at(std::clamp(x, 0, image.width - 1), std::clamp(y, 0, image.height - 1));
+            return c.g > c.r + 40 && c.g > c.b + 40;
+        };
+        value.assign(size_t(image.width) * size_t(image.height), NAN);
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                bool edge = false;  // pixels blended with the paper at the outline are left out
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) edge |= paper_at(x + dx, y + dy);
+                if (edge) continue;
+                const render::Rgba c = image.at(x, y);
+                value[size_t(y) * size_t(image.width) + size_t(x)] =
+                    c.r >= c.b ? (255.0f - c.g) / (0.86f * 255.0f) : -(255.0f - c.r) / (0.81f * 255.0f);
+            }
+    };
+    std::vector<float> reference;
+    decode("rusinkiewicz", reference);
+    size_t model = 0;
+    for (float v : reference) model += !std::isnan(v);
+    REQUIRE(model > 128 * 128 / 4);  // the model fills the middle of the picture
+    for (const char* name : {"jet", "tensor-averaging", "normal-fit", "points-normals-fit"}) {
+        std::vector<float> value;
+        decode(name, value);
+        size_t both = 0, clear = 0, same_sign = 0;
+        double difference = 0;
+        for (size_t i = 0; i < value.size(); ++i) {
+            if (std::isnan(value[i]) || std::isnan(reference[i])) continue;
+            ++both;
+            difference += std::fabs(value[i] - reference[i]);
+            if (std::fabs(reference[i]) > 0.25f) ++clear, same_sign += (value[i] > 0) == (reference[i] > 0);
+        }
+        INFO(name << ": " << both << " model pixels in both, " << clear << " with |k1| / range > 0.25, "
+                  << same_sign << " of those of the same sign; mean |difference| " << difference / double(both));
+        CHECK(both > model * 9 / 10);
+        CHECK(clear > both / 4);
+        CHECK(same_sign > clear * 97 / 100);
+        CHECK(difference / double(both) < 0.02);  // measured 0.0016 to 0.0039 (2026-11-26)
+    }
     const auto bad = test::run_command(kappa_render("-o " + dir + "/x.png --estimator cgal"));
     CHECK(bad.exit_code == 2);
     CHECK(test::count_lines(bad.output) == 1);
+}
+
+namespace {
+
+// Both ways: the fraction of each drawing's ink within 1.5 px of the other's (the smaller).
+double ink_agreement(const render::Image& a, const render::Image& b) {
+    return std::min(render::ink_within(a, b, 1.5f), render::ink_within(b, a, 1.5f));
+}
+
+}  // namespace
+
+TEST_CASE("A turntable's frame i is the view at azimuth + 360 i / N, about the model's y axis",
+          "[render][cli][turntable]") {
+    // The bunny looks different from every side, unlike a cube: a wrong
+    // axis, direction or step fails. Frame i of --turntable 4 --view 30,20
+    // must match --view (30 + 90 i),20 (azimuth: degrees about +y, 0 = from
+    // +z, 90 = from +x), and not the view turned the other way.
+    const std::string dir = test::temp_dir(), bunny = test::shared_mesh("bunny.ply");
+    const std::string common = " -q --size 160x120 --shading none --msaa off";
+    REQUIRE(test::run_command(kappa_render(bunny + common + " --view 30,20 --turntable 4 -o " + dir + "/t.png"))
+                .exit_code == 0);
+    for (int i = 1; i < 4; ++i) {
+        const std::string az = std::to_string(30 + 90 * i), wrong = std::to_string(30 - 90 * i);
+        REQUIRE(test::run_command(kappa_render(bunny + common + " --view " + az + ",20 -o " + dir + "/v.png"))
+                    .exit_code == 0);
+        REQUIRE(test::run_command(kappa_render(bunny + common + " --view " + wrong + ",20 -o " + dir + "/w.png"))
+                    .exit_code == 0);
+        const render::Image frame = render::read_png(dir + "/t-00" + std::to_string(i) + ".png");
+        const double same = ink_agreement(frame, render::read_png(dir + "/v.png"));
+        const double other = ink_agreement(frame, render::read_png(dir + "/w.png"));
+        INFO("frame " << i << ": agreement with --view " << az << ",20: " << same << ", with --view " << wrong
+                      << ",20: " << other);
+        CHECK(test::count_ink(frame) > 300);
+        CHECK(same > 0.98);
+        if (i != 2) CHECK(other < 0.8);  // (half a turn is the same both ways)
+    }
+}
+
+TEST_CASE("A turntable with --up or --xf turns about the camera's up axis, through the target or the model's centre",
+          "[render][cli][turntable]") {
+    // Camera at E looking at T with up U (perpendicular to E - T): a quarter
+    // turn moves the eye to T + rot(U, 90 deg) (E - T). The same view as an
+    // rtsc .xf file turns about the same axis through the bounding sphere's centre.
+    const std::string dir = test::temp_dir(), bunny = test::shared_mesh("bunny.ply");
+    const std::string common = " -q --size 160x120 --shading none --msaa off --fov 30";
+    const render::BoundingSphere bounds = render::bounding_sphere(load_mesh(bunny));
+    const glm::vec3 T = bounds.center, U = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
+    const glm::vec3 side = glm::normalize(glm::cross(U, glm::vec3(0, 0, 1)));
+    const glm::vec3 E = T + 4.0f * bounds.radius * glm::normalize(glm::cross(side, U));  // perpendicular to U
+    const glm::vec3 E1 = T + glm::vec3(glm::rotate(glm::mat4(1), float(M_PI / 2), U) * glm::vec4(E - T, 0));
+    const glm::vec3 wrong = T + glm::vec3(glm::rotate(glm::mat4(1), -float(M_PI / 2), U) * glm::vec4(E - T, 0));
+    auto vec = [](glm::vec3 v) {
+        char s[128];
+        std::snprintf(s, sizeof s, "%.9g,%.9g,%.9g", v.x, v.y, v.z);
+        return std::string(s);
+    };
+    auto camera_args = [&](glm::vec3 eye) { return " --eye " + vec(eye) + " --target " + vec(T) + " --up " + vec(U); };
+    render::write_xf(dir + "/view.xf", glm::lookAt(E, T, U));
+    REQUIRE(test::run_command(kappa_render(bunny + common + camera_args(E) + " --turntable 4 -o " + dir + "/u.png"))
+                .exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(bunny + common + " --xf " + dir + "/view.xf --turntable 4 -o " + dir +
+                                           "/x.png"))
+                .exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(bunny + common + camera_args(E1) + " -o " + dir + "/e1.png")).exit_code == 0);
+    REQUIRE(test::run_command(kappa_render(bunny + common + camera_args(wrong) + " -o " + dir + "/w.png")).exit_code == 0);
+    const render::Image expected = render::read_png(dir + "/e1.png"), other = render::read_png(dir + "/w.png");
+    REQUIRE(test::count_ink(expected) > 300);
+    for (const char* frame : {"u-001.png", "x-001.png"}) {
+        const render::Image image = render::read_png(dir + "/" + frame);
+        const double same = ink_agreement(image, expected), turned_back = ink_agreement(image, other);
+        INFO(frame << ": agreement with the eye turned a quarter about the up axis " << same
+                   << ", turned the other way " << turned_back);
+        CHECK(same > 0.98);
+        CHECK(turned_back < 0.8);
+    }
 }
