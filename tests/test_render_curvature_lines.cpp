@@ -5,6 +5,7 @@
 #include "test_render_fixtures.h"
 
 #include "geometry/mesh/primitives.h"
+#include "geometry/curvature/feature_size.h"
 #include "geometry/surface_analysis.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -170,4 +171,52 @@ TEST_CASE("A sphere's isophotes are circles around the light direction, its topo
     INFO("topo: ink " << ink << ", near the six latitudes " << near);
     CHECK(ink > 300);
     CHECK(near > 0.97);
+}
+
+TEST_CASE("Ridges alone are a corrugated sheet's crests, valleys alone its troughs", "[render][curvature-lines]") {
+    // z = A sin(2 pi x / L), normals up: k = A (2 pi / L)^2 > 0 across the
+    // crests (sin = 1, convex seen from above: ridges), < 0 across the
+    // troughs (valleys); zero along y. Seen from above, each kind alone is a
+    // set of lines x = constant: crests at x = L/4 + m L, troughs at 3L/4 + m L.
+    // A ridge/valley sign swap, or one kind drawing the other, fails.
+    const float A = 0.08f, L = 0.5f;
+    Mesh sheet = make_grid(2.0f, 100);
+    for (glm::vec3& p : sheet.positions) p.z = A * std::sin(2.0f * float(M_PI) * p.x / L);
+    const SurfaceFields fields = compute_surface_fields(sheet);
+    {
+        size_t up = 0;  // the grid is counter-clockwise seen from +z: normals up
+        for (const glm::vec3& n : fields.normals) up += n.z > 0;
+        REQUIRE(up == fields.size());
+    }
+    const render::BoundingSphere bounds = render::bounding_sphere(sheet);
+    const render::Camera camera = render::Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 30);
+    auto screen_x = [&](float x) { return test::project(camera, bounds, {x, 0, 0}, 256, 256).x; };
+    const float border = screen_x(0.9f) - screen_x(0.0f);  // leave out the sheet's border (one-sided estimates)
+    const float centre = screen_x(0.0f), centre_y = test::project(camera, bounds, {0, 0, 0}, 256, 256).y;
+    for (const bool ridges : {true, false}) {
+        render::LineSelection l = only(ridges ? &render::LineSelection::ridges : &render::LineSelection::valleys);
+        render::RenderSettings s = test::lines_only(l);
+        s.lines.creases = false;
+        s.rv_threshold = 0.2f;
+        s.detail = 0;
+        const render::Image im = test::render(sheet, fields, feature_size(sheet, fields), camera, s, 256, 256);
+        test::maybe_save(im, ridges ? "ridges-sheet" : "valleys-sheet");
+        size_t ink = 0, on_crests = 0, on_troughs = 0;
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) {
+                if (!test::is_ink(im.at(x, y))) continue;
+                const glm::vec2 p(x + 0.5f, y + 0.5f);
+                if (std::fabs(p.x - centre) > border || std::fabs(p.y - centre_y) > border) continue;
+                ++ink;
+                for (int m = -2; m <= 2; ++m) {
+                    on_crests += std::fabs(p.x - screen_x(L / 4 + float(m) * L)) < 3.0f;
+                    on_troughs += std::fabs(p.x - screen_x(3 * L / 4 + float(m) * L)) < 3.0f;
+                }
+            }
+        INFO((ridges ? "ridges" : "valleys") << ": ink " << ink << ", on crests " << on_crests << ", on troughs "
+                                             << on_troughs);
+        CHECK(ink > 400);  // about 4 lines of ~200 px, 2 px wide
+        CHECK(double(ridges ? on_crests : on_troughs) > 0.95 * double(ink));
+        CHECK((ridges ? on_troughs : on_crests) == 0);
+    }
 }
