@@ -5,6 +5,8 @@
 
 #include "test_support.h"
 
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 #include "render/vector/plotter.h"
 #include "render/vector/stroke_cleanup.h"
 #include "render/vector/vector_drawing.h"
@@ -153,6 +155,21 @@ TEST_CASE("kappa render --plotter: no path drawn twice, less pen travel than the
             return n;
         };
         CHECK(count("stroke-width") == count("inkscape:groupmode"));  // set once per layer, never per path
+        // And the drawing is still there: the plotter SVG rasterised by
+        // another program (rsvg-convert) agrees with the PNG of the same view
+        // both ways, as the plain SVG does (test_render_vector_output.cpp).
+        REQUIRE(test::run_command(base + " -o " + dir + "/plain.png").exit_code == 0);
+        REQUIRE(test::run_command("rsvg-convert " + dir + "/plotter.svg -o " + dir + "/plotter.png").exit_code == 0);
+        const render::Image png = render::read_png(dir + "/plain.png"), drawn = render::read_png(dir + "/plotter.png");
+        REQUIRE(drawn.width == png.width);
+        REQUIRE(drawn.height == png.height);
+        const double plotter_near_png = render::ink_within(drawn, png, 2.0f);
+        const double png_near_plotter = render::ink_within(png, drawn, 2.0f);
+        INFO("ink " << render::count_ink(png) << " in the PNG, " << render::count_ink(drawn) << " in the plotter SVG; "
+                    << "plotter ink near the PNG's " << plotter_near_png << ", and back " << png_near_plotter);
+        CHECK(render::count_ink(png) > 1000);
+        CHECK(plotter_near_png >= 0.95);
+        CHECK(png_near_plotter >= 0.95);
     }
 }
 
