@@ -233,3 +233,66 @@ TEST_CASE("Vector glyphs: normals stick out of a sphere's outline, tangents stay
     CHECK(ink_beyond(tangents, outline + 12) == 0);
     CHECK(test::count_ink(view) == 0);
 }
+
+TEST_CASE("k1 and k2 maps differ where k1 != k2: a torus's inner wall is red in k1 and blue in k2",
+          "[render][colormap]") {
+    // Inner wall (cos v = -1): k1 = 1/r = 2.5 > 0, k2 = -1/(R - r) = -1.67 < 0.
+    // A swap of k1 and k2 (or either map showing the other) fails; on a
+    // sphere, where k1 = k2, it would not.
+    const Mesh torus = make_torus(1.0f, 0.4f, 120, 48);
+    const SurfaceFields fields = test::torus_fields(torus, 1.0f, 0.4f);
+    const auto camera = render::Camera::look_at({0, -2.8f, 1.6f}, {0, 0, 0}, {0, 0, 1}, 40.0f);
+    const render::BoundingSphere bounds = render::bounding_sphere(torus);
+    const glm::vec2 inner_wall = test::project(camera, bounds, {0, 0.6f, 0}, 256, 256);
+    const glm::vec2 outer_equator = test::project(camera, bounds, {0, -1.4f, 0}, 256, 256);
+    const auto k1 = test::render(torus, fields, 0.4f, camera, map_only(render::ColorMap::K1));
+    const auto k2 = test::render(torus, fields, 0.4f, camera, map_only(render::ColorMap::K2));
+    check_pixel(k1, inner_wall, Hue::Red, "k1, inner wall (k1 = 1/r > 0)");
+    check_pixel(k2, inner_wall, Hue::Blue, "k2, inner wall (k2 < 0)");
+    check_pixel(k1, outer_equator, Hue::Red, "k1, outer equator (k1 = 1/r)");
+    check_pixel(k2, outer_equator, Hue::Red, "k2, outer equator (k2 = 1/(R + r) > 0)");
+}
+
+TEST_CASE("Vector glyphs principal2 and asymptotic: along the second direction, and only where K < 0",
+          "[render][vectors]") {
+    // A coarse torus seen from above: at vertex (i, j) = (0, 2), v = 72
+    // degrees, d1 runs along the tube, in the xz plane (along x on screen),
+    // and d2 along the big circle (along y on screen). Neighbouring vertices
+    // are more than 18 px away, so the strokes there are that vertex's own.
+    // Asymptotic directions exist only where K < 0, the inner half (rho < R);
+    // no vertex has v = 90 degrees (K = 0 up to rounding).
+    const float R = 1.0f, r = 0.4f;
+    const Mesh torus = make_torus(R, r, 16, 10);
+    const SurfaceFields exact = test::torus_fields(torus, R, r);
+    const render::Camera camera = render::Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 30);
+    const render::BoundingSphere bounds = render::bounding_sphere(torus);
+    auto draw = [&](int vectors) {
+        render::RenderSettings s = test::lines_only(render::LineSelection{false, false, false, false});
+        s.vectors = vectors;
+        return test::render(torus, exact, r, camera, s, 256, 256);
+    };
+    const glm::vec2 top = test::project(camera, bounds, torus.positions[2], 256, 256);
+    auto ink_at = [](const render::Image& im, glm::vec2 p) { return test::is_ink(im.at(int(p.x), int(p.y))); };
+    const render::Image first = draw(render::kGlyphPrincipal1), second = draw(render::kGlyphPrincipal2);
+    for (const float o : {-5.0f, 5.0f}) {
+        INFO("offset " << o << " px from the vertex at " << top.x << ", " << top.y);
+        CHECK(ink_at(first, top + glm::vec2(o, 0)));
+        CHECK_FALSE(ink_at(first, top + glm::vec2(0, o)));
+        CHECK(ink_at(second, top + glm::vec2(0, o)));
+        CHECK_FALSE(ink_at(second, top + glm::vec2(o, 0)));
+    }
+    const render::Image asymptotic = draw(render::kGlyphAsymptotic);
+    const glm::vec2 centre = test::project(camera, bounds, {0, 0, 0}, 256, 256);
+    const float inner_radius = glm::length(test::project(camera, bounds, {R, 0, r}, 256, 256) - centre);  // rho = R
+    size_t ink = 0, outside = 0;
+    for (int y = 0; y < asymptotic.height; ++y)
+        for (int x = 0; x < asymptotic.width; ++x) {
+            if (!test::is_ink(asymptotic.at(x, y))) continue;
+            ++ink;
+            outside += glm::length(glm::vec2(x + 0.5f, y + 0.5f) - centre) > inner_radius + 2;
+        }
+    INFO("asymptotic glyph ink " << ink << ", outside the inner half " << outside << " (radius " << inner_radius
+                                 << " px)");
+    CHECK(ink > 200);
+    CHECK(outside == 0);
+}
