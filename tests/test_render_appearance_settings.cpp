@@ -7,6 +7,8 @@
 #include "app/appearance_settings.h"
 
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <set>
 #include <string>
 
@@ -86,4 +88,71 @@ TEST_CASE("settings drawn as sliders and colours edit the field their text sets"
     REQUIRE(detail);
     CHECK(detail->can_be_off);
     CHECK(app::find_appearance_setting("line-color"));
+}
+
+// Each row's text sets the RenderSettings field its name says: a row wired to
+// another field (its setter and getter agreeing with each other) fails here.
+TEST_CASE("every appearance setting sets the field its name says", "[render][settings]") {
+    using render::RenderSettings;
+    struct Expect {
+        std::string value;
+        std::function<bool(const RenderSettings&)> check;
+    };
+    const std::map<std::string, Expect> expected = {
+        {"lines", {"ridges,topo", [](const RenderSettings& s) {
+                       return s.lines.ridges && s.lines.topo && !s.lines.contours && !s.lines.suggestive &&
+                              !s.lines.valleys && !s.lines.creases;
+                   }}},
+        {"detail", {"7", [](const RenderSettings& s) { return s.detail == 7.0f; }}},
+        {"crease-angle", {"33", [](const RenderSettings& s) { return s.crease_angle == 33.0f; }}},
+        {"sc-threshold", {"0.31", [](const RenderSettings& s) { return s.sc_threshold == 0.31f; }}},
+        {"rv-threshold", {"0.32", [](const RenderSettings& s) { return s.rv_threshold == 0.32f; }}},
+        {"ar-threshold", {"0.33", [](const RenderSettings& s) { return s.ar_threshold == 0.33f; }}},
+        {"sh-threshold", {"0.34", [](const RenderSettings& s) { return s.sh_threshold == 0.34f; }}},
+        {"ph-threshold", {"0.35", [](const RenderSettings& s) { return s.ph_threshold == 0.35f; }}},
+        {"isophotes", {"7", [](const RenderSettings& s) { return s.isophote_count == 7; }}},
+        {"topo", {"9", [](const RenderSettings& s) { return s.topo_count == 9; }}},
+        {"line-width", {"3.5", [](const RenderSettings& s) { return s.line_width == 3.5f; }}},
+        {"fade", {"off", [](const RenderSettings& s) { return !s.fade; }}},
+        {"vectors", {"principal2,view", [](const RenderSettings& s) {
+                         return s.vectors == (render::kGlyphPrincipal2 | render::kGlyphView);
+                     }}},
+        {"hidden-lines", {"on", [](const RenderSettings& s) { return s.hidden_lines; }}},
+        {"shading", {"gooch", [](const RenderSettings& s) { return s.shading == render::Shading::Gooch; }}},
+        {"light", {"0.5,-0.25,1", [](const RenderSettings& s) { return s.light_dir == glm::vec3(0.5f, -0.25f, 1); }}},
+        {"light-frame", {"model", [](const RenderSettings& s) { return s.light_on_model; }}},
+        {"colormap", {"gaussian", [](const RenderSettings& s) { return s.colormap == render::ColorMap::Gaussian; }}},
+        {"colorbar", {"on", [](const RenderSettings& s) { return s.colorbar; }}},
+        {"hatching", {"max", [](const RenderSettings& s) { return s.hatching == render::Hatching::Max; }}},
+        {"hatch-spacing", {"6.5", [](const RenderSettings& s) { return s.hatch_spacing == 6.5f; }}},
+        {"min-stroke", {"4.5", [](const RenderSettings& s) { return s.min_stroke == 4.5f; }}},
+        {"simplify", {"0.75", [](const RenderSettings& s) { return s.simplify == 0.75f; }}},
+        {"taper", {"8.5", [](const RenderSettings& s) { return s.taper == 8.5f; }}},
+        {"width-by-strength", {"on", [](const RenderSettings& s) { return s.width_by_strength; }}},
+        {"plotter", {"on", [](const RenderSettings& s) { return s.plotter; }}},
+        {"background", {"#ff8000", [](const RenderSettings& s) {
+                            return s.background == glm::vec4(1, 128.0f / 255.0f, 0, 1);
+                        }}},
+        {"line-color", {"#0080ff", [](const RenderSettings& s) {
+                            return s.line_color == glm::vec3(0, 128.0f / 255.0f, 1);
+                        }}},
+        {"msaa", {"off", [](const RenderSettings& s) { return !s.msaa; }}},
+        {"line-extraction", {"gpu", [](const RenderSettings& s) {
+                                 return s.line_extraction == render::LineExtraction::Gpu;
+                             }}},
+    };
+    std::set<std::string> seen;
+    for (const app::AppearanceSetting& a : app::appearance_settings()) {
+        INFO("--" << a.name);
+        const auto e = expected.find(a.name);
+        CHECK(e != expected.end());  // a new setting: add its field here
+        if (e == expected.end()) continue;
+        seen.insert(a.name);
+        const render::RenderSettings defaults;
+        CHECK_FALSE(e->second.check(defaults));  // the value differs from the default
+        render::RenderSettings s;
+        REQUIRE(a.set(s, e->second.value));
+        CHECK(e->second.check(s));
+    }
+    CHECK(seen.size() == expected.size());
 }
