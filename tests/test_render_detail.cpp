@@ -207,10 +207,17 @@ TEST_CASE("Detail off draws the raw 1-ring lines, and explicit smoothing widths 
     const size_t ink_off = render::count_ink(got), ink_on = render::count_ink(render::read_png(dir + "/on.png"));
     INFO("ink: detail off " << ink_off << ", default detail " << ink_on);
     CHECK(ink_on < ink_off * 3 / 4);
-    // With an explicit width the drawing is that width's, not the detail's.
+    // With an explicit width the drawing is that width's, not the detail's:
+    // pixel for pixel the drawing of the same width with detail off.
     const bool differ = render::read_png(dir + "/widths.png").pixels != render::read_png(dir + "/on.png").pixels;
     CHECK(differ);
     CHECK(widths.exit_code == 0);
+    const auto widths_off = test::run_command(std::string(KAPPA_EXE) + common +
+                                              "--smooth-curvature 0.002 --detail off -o " + dir + "/widths-off.png");
+    REQUIRE(widths_off.exit_code == 0);
+    const bool same_as_detail_off =
+        render::read_png(dir + "/widths.png").pixels == render::read_png(dir + "/widths-off.png").pixels;
+    CHECK(same_as_detail_off);
 
     const auto bad = test::run_command(std::string(KAPPA_EXE) + common + "--detail -3 -o " + dir + "/bad.png");
     CHECK(bad.exit_code == 2);
