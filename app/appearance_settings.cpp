@@ -205,6 +205,12 @@ const std::vector<AppearanceSetting>& appearance_settings() {
                        render::parse_hatching, &R::hatching, "hatching"),
         real("hatch-spacing", "PX", "pixels between hatching strokes in the darkest tone (default 4)", 2, 100,
              &R::hatch_spacing, 2, 30, false, "%.1f px"),
+        choice_setting("hatch-style", render::hatch_style_names(),
+                       "how hatching is drawn: streamlines (evenly spaced, traced on the CPU, attached to the "
+                       "surface; the viewer draws shader strokes while the view moves) or shader (strokes drawn "
+                       "by the GPU in the surface pass, fixed to the window; raster output only) "
+                       "(default streamlines)",
+                       render::parse_hatch_style, &R::hatch_style, "hatch style"),
         real("min-stroke", "PX", "vector output: drop visible paths shorter than PX pixels (default 0: keep all)", 0,
              1e6f, &R::min_stroke, 0, 50, false, "%.1f px"),
         real("simplify", "PX", "vector output: simplify paths within PX pixels (Douglas-Peucker; default 0.25, 0: off)",

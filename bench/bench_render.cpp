@@ -147,6 +147,8 @@ int main(int argc, char** argv) {
     lines.lines = {true, true, false};
     render::RenderSettings all = lines;
     all.hatching = render::Hatching::Cross;
+    render::RenderSettings all_shader = all;  // hatching as the viewer draws it while the view moves
+    all_shader.hatch_style = render::HatchStyle::Shader;
     render::RenderSettings lines_unculled = lines;  // what cluster culling saves
     lines_unculled.cull_clusters = false;
     // Where the lines are made (auto: the CPU on software GL, compute passes on a hardware GL 4.3).
@@ -158,6 +160,7 @@ int main(int argc, char** argv) {
     for (const render::LineKind& k : render::line_kinds()) every.lines.*(k.flag) = k.name != "silhouette";
     std::vector<Config> configs = {{"lambert", plain}, {"lambert+contours+suggestive", lines},
                                    {"lambert+contours+suggestive+hatching", all},
+                                   {"  (contours+suggestive+hatching, shader)", all_shader},
                                    {"  (contours+suggestive, no culling)", lines_unculled},
                                    {"  (contours+suggestive, compute)", on(lines, render::LineExtraction::Compute)},
                                    {"  (contours+suggestive, geometry shader)", on(lines, render::LineExtraction::Gpu)},
@@ -239,6 +242,10 @@ int main(int argc, char** argv) {
                         times[every_row].wall_ms / times[lines_row].wall_ms, times[every_row].cpu_ms / times[lines_row].cpu_ms);
             if (lines_row > 0)
                 std::printf("  contours+suggestive - lambert: wall %+.2f ms\n", times[lines_row].wall_ms - times[0].wall_ms);
+            const int shader_row = row("  (contours+suggestive+hatching, shader)");
+            if (lines_row > 0 && shader_row > 0)
+                std::printf("  shader hatching / contours+suggestive: wall %.2fx\n",
+                            times[shader_row].wall_ms / times[lines_row].wall_ms);
             const int every_gs = row("  (every line type, geometry shader)"), lines_gs = row("  (contours+suggestive, geometry shader)");
             if (every_gs > 0 && lines_gs > 0)
                 std::printf("  geometry shaders: every line type / contours+suggestive: wall %.2fx\n",

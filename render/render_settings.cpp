@@ -38,6 +38,10 @@ const std::vector<std::string>& hatching_names() {
     static const std::vector<std::string> n{"none", "min", "max", "cross"};
     return n;
 }
+const std::vector<std::string>& hatch_style_names() {
+    static const std::vector<std::string> n{"streamlines", "shader"};
+    return n;
+}
 const std::vector<LineKind>& line_kinds() {
     using L = LineSelection;
     static const std::vector<LineKind> k{
@@ -79,6 +83,7 @@ const std::vector<std::string>& line_names() {
 std::optional<Shading> parse_shading(const std::string& s) { return lookup<Shading>(shading_names(), s); }
 std::optional<ColorMap> parse_colormap(const std::string& s) { return lookup<ColorMap>(colormap_names(), s); }
 std::optional<Hatching> parse_hatching(const std::string& s) { return lookup<Hatching>(hatching_names(), s); }
+std::optional<HatchStyle> parse_hatch_style(const std::string& s) { return lookup<HatchStyle>(hatch_style_names(), s); }
 
 std::optional<LineSelection> parse_lines(const std::string& list) {
     LineSelection l{false, false, false, false, false, false, false, false, false, false, false};
@@ -172,6 +177,7 @@ std::optional<glm::vec3> parse_color(const std::string& s) {
 std::string to_string(Shading s) { return shading_names()[size_t(s)]; }
 std::string to_string(ColorMap m) { return colormap_names()[size_t(m)]; }
 std::string to_string(Hatching h) { return hatching_names()[size_t(h)]; }
+std::string to_string(HatchStyle h) { return hatch_style_names()[size_t(h)]; }
 std::string to_string(const LineSelection& l) {
     std::string s;
     for (const LineKind& k : line_kinds())

@@ -17,6 +17,13 @@ namespace kappa::render {
 enum class Shading { None, Lambert, Toon, Hemisphere, ToonBW, Gooch };
 enum class ColorMap { None, K1, K2, Mean, Gaussian, Principal, DCurv };
 enum class Hatching { None, Min, Max, Cross };
+// How hatching is drawn (--hatch-style): evenly spaced streamlines traced on
+// the CPU over a field read back from the GPU (render/hatching/hatch_streamlines.h;
+// attached to the surface, and the only style of vector output), or strokes
+// drawn by the surface pass on the GPU (shaders/hatching/shader_hatching.glsl:
+// no readback, frame-rate cheap, fixed to the window). The viewer draws the
+// shader style while the view moves and the streamlines once it rests.
+enum class HatchStyle { Streamlines, Shader };
 // Where the lines of --lines (all but creases and boundaries) are extracted:
 // compute passes (GL 4.3; render/lines/segment_buffer.h), geometry shaders
 // (gpu), or the CPU (render/lines/cpu_lines.h). auto = the CPU when the GL is
@@ -81,6 +88,7 @@ struct RenderSettings {
     float hatch_spacing = 4.0f;        // pixels between strokes in the darkest tone
     float hatch_stroke_length = 16.0f; // pixels
     float hatch_stroke_width = 1.25f;  // pixels
+    HatchStyle hatch_style = HatchStyle::Streamlines;
 
     // Vector output (-o .svg/.pdf): clean-up of the strokes (render/vector/stroke_cleanup.h, render/vector/plotter.h).
     float min_stroke = 0;              // pixels: visible paths shorter than this are dropped
@@ -103,6 +111,7 @@ glm::vec3 unit_light_direction(const RenderSettings& settings);
 const std::vector<std::string>& shading_names();
 const std::vector<std::string>& colormap_names();
 const std::vector<std::string>& hatching_names();
+const std::vector<std::string>& hatch_style_names();
 // Every line kind: its word in --lines and its flag. The one list behind
 // line_names, parse_lines and to_string (and the viewer's panel and keys).
 struct LineKind {
@@ -116,6 +125,11 @@ const std::vector<std::string>& line_names();
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<ColorMap> parse_colormap(const std::string& s);
 std::optional<Hatching> parse_hatching(const std::string& s);
+std::optional<HatchStyle> parse_hatch_style(const std::string& s);
+// Whether a frame with these settings draws its hatching on the GPU (render/hatching/shader_hatching.h).
+inline bool shader_hatching(const RenderSettings& s) {
+    return s.hatching != Hatching::None && s.hatch_style == HatchStyle::Shader;
+}
 // "contours,suggestive", "none"; nullopt for unknown or repeated words.
 std::optional<LineSelection> parse_lines(const std::string& list);
 // "normal,principal1,principal2,asymptotic,view" (any of them) or "none": RenderSettings::vectors.
@@ -135,6 +149,7 @@ std::optional<glm::vec3> parse_color(const std::string& s);
 std::string to_string(Shading s);
 std::string to_string(ColorMap m);
 std::string to_string(Hatching h);
+std::string to_string(HatchStyle h);
 std::string to_string(const LineSelection& l);
 
 }  // namespace kappa::render

@@ -62,7 +62,22 @@ void Renderer::ensure_buffers(int width, int height, bool msaa) {
     if (!lines_fb_.matches(width, height, 0)) lines_fb_ = Framebuffer({width, height, 0, GL_R8, false});
 }
 
-FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderSettings& s, int w, int h) {
+FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderSettings& settings, int w, int h) {
+    // An interactive viewer's streamline hatching: the streamlines of this
+    // view once traced in the background, the shader's strokes until then
+    // (render/hatching/background_hatching.h).
+    RenderSettings s = settings;
+    HatchViewKey hatch_key;
+    const std::vector<Stroke>* traced = nullptr;
+    const bool background_streamlines =
+        mesh_ && interactive_hatching_ && s.hatching != Hatching::None && !shader_hatching(s);
+    if (background_streamlines) {
+        const FrameParams view = FrameParams::make(camera, mesh_->bounds(), w, h);
+        hatch_key = {view.mvp, view.viewport, camera_light_direction(s, view), s.hatching, s.hatch_spacing,
+                     s.hatch_stroke_width, mesh_->fields_version()};
+        traced = background_hatching_.strokes_for(hatch_key);
+        if (!traced) s.hatch_style = HatchStyle::Shader;
+    }
     // Multisampling smooths the surface's edges: a surface the colour of the
     // background has none, and is drawn once per pixel (the same picture).
     const bool msaa = s.msaa && !surface_is_background(s);
@@ -94,8 +109,20 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
         cpu_depth_ = nullptr;
     }
     if (msaa) resolve(surface_ms_fb_, surface_fb_);
-    const std::vector<Stroke> hatching = mesh_ && s.hatching != Hatching::None ? hatch_strokes(frame, s)
-                                                                              : std::vector<Stroke>{};
+    std::vector<Stroke> hatching;
+    if (background_streamlines) {
+        if (traced) {
+            hatching = *traced;
+        } else if (!view_moving_ && !background_hatching_.pending()) {
+            // At rest: this view's field, read back once here, traced on a worker.
+            HatchField field = hatch_field_.draw(*mesh_, frame, settings);
+            std::vector<glm::vec2> seeds = hatch_seeds_in_view(frame, field);
+            background_hatching_.start(hatch_key, std::move(field), std::move(seeds), settings);
+        }
+    } else if (mesh_ && s.hatching != Hatching::None && !shader_hatching(s)) {
+        hatching = hatch_strokes(frame, s);
+    }
+    drew_streamlines_ = !hatching.empty();
     glViewport(0, 0, w, h);
 
     // 2. Lines as coverage, occlusion-tested against the surface depth.
@@ -140,9 +167,8 @@ std::vector<Stroke> Renderer::hatch_strokes(const Camera& camera, const RenderSe
     return hatch_strokes(FrameParams::make(camera, mesh_->bounds(), width, height), s);
 }
 
-std::vector<Stroke> Renderer::hatch_strokes(const FrameParams& frame, const RenderSettings& s) {
-    const HatchField field = hatch_field_.draw(*mesh_, frame, s);
-    // Seeds: surface samples turned towards the eye and not hidden, in their fixed order.
+std::vector<glm::vec2> Renderer::hatch_seeds_in_view(const FrameParams& frame, const HatchField& field) const {
+    // Surface samples turned towards the eye and not hidden, in their fixed order.
     std::vector<glm::vec2> seeds;
     for (const MeshBuffers::Seed& seed : mesh_->hatch_seeds()) {
         if (glm::dot(seed.normal, frame.eye - seed.position) <= 0) continue;
@@ -156,24 +182,12 @@ std::vector<Stroke> Renderer::hatch_strokes(const FrameParams& frame, const Rend
         if (c.w > drawn_distance * 1.01f) continue;
         seeds.push_back(p);
     }
-    // Max: along d1; min: along d2; cross: d1, then d2 in the darker tones
-    // (the two families traced at once, joined in this order).
-    const size_t families = s.hatching == Hatching::Cross ? 2 : 1;
-    std::vector<std::vector<Stroke>> traced(families);
-    parallel_for_dynamic(families, [&](size_t family) {
-        HatchParams params;
-        params.spacing = s.hatch_spacing;
-        params.family = s.hatching == Hatching::Min || family == 1 ? 1 : 0;
-        params.cross_family = family == 1;
-        traced[family] = trace_hatching(field, seeds, params);
-    });
-    std::vector<Stroke> strokes;
-    for (std::vector<Stroke>& family_strokes : traced) {
-        for (Stroke& st : family_strokes) st.width = s.hatch_stroke_width;
-        strokes.insert(strokes.end(), std::make_move_iterator(family_strokes.begin()),
-                       std::make_move_iterator(family_strokes.end()));
-    }
-    return strokes;
+    return seeds;
+}
+
+std::vector<Stroke> Renderer::hatch_strokes(const FrameParams& frame, const RenderSettings& s) {
+    const HatchField field = hatch_field_.draw(*mesh_, frame, s);
+    return trace_view_hatching(field, hatch_seeds_in_view(frame, field), s);
 }
 
 Image render_to_image(Renderer& renderer, const Camera& camera, const RenderSettings& settings, int width,

@@ -10,6 +10,7 @@
 #include "render/camera/camera.h"
 #include "render/surface/depth_raster.h"
 #include "render/gl/framebuffer.h"
+#include "render/hatching/background_hatching.h"
 #include "render/hatching/hatch_field.h"
 #include "render/lines/line_renderer.h"
 #include "render/fields/mesh_buffers.h"
@@ -74,6 +75,18 @@ public:
     // CPU when the lines are (render/surface/depth_raster.h; software GL by
     // default). For tests and benchmarks, to compare with the GL's.
     void set_cpu_surface_depth(bool on) { cpu_surface_depth_ = on; }
+    // A viewer's streamline hatching (render/hatching/background_hatching.h):
+    // traced on a worker thread once the view rests (set_view_moving(false)),
+    // the shader's strokes until they are ready and while the view moves.
+    // Off (the default): every frame traces its own, as `kappa render`.
+    void set_interactive_hatching(bool on) { interactive_hatching_ = on; }
+    void set_view_moving(bool moving) { view_moving_ = moving; }
+    // Called on a worker thread when a view's streamlines are ready to be drawn.
+    void set_hatching_done(std::function<void()> done) { background_hatching_.set_on_done(std::move(done)); }
+    // Streamlines are being traced: a frame should come soon to show them.
+    bool hatching_pending() const { return background_hatching_.pending(); }
+    // The last frame was hatched with traced streamlines (not the shader's strokes).
+    bool drew_streamlines() const { return drew_streamlines_; }
     // Where this context extracts the lines of `settings` (never Auto; render_settings.h).
     LineExtraction line_path(const RenderSettings& settings) const;
     // With the compute path, whether every frame waits until its segment
@@ -89,11 +102,14 @@ private:
     // Steps 1 and 2 of a frame: the surface into surface_fb_, the lines' coverage into lines_fb_ (where: ink_).
     FrameParams draw_surface_and_lines(const Camera& camera, const RenderSettings& settings, int width, int height);
     std::vector<Stroke> hatch_strokes(const FrameParams& frame, const RenderSettings& settings);
+    std::vector<glm::vec2> hatch_seeds_in_view(const FrameParams& frame, const HatchField& field) const;
 
     std::unique_ptr<MeshBuffers> mesh_;
     SurfaceRenderer surface_pass_;
     LineRenderer line_pass_;
     HatchFieldPass hatch_field_;
+    BackgroundHatching background_hatching_;
+    bool interactive_hatching_ = false, view_moving_ = false, drew_streamlines_ = false;
     StrokePass stroke_pass_;
     Compositor compositor_;
     ColorBar colorbar_;

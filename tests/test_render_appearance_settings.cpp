@@ -125,6 +125,7 @@ TEST_CASE("every appearance setting sets the field its name says", "[render][set
         {"colorbar", {"on", [](const RenderSettings& s) { return s.colorbar; }}},
         {"hatching", {"max", [](const RenderSettings& s) { return s.hatching == render::Hatching::Max; }}},
         {"hatch-spacing", {"6.5", [](const RenderSettings& s) { return s.hatch_spacing == 6.5f; }}},
+        {"hatch-style", {"shader", [](const RenderSettings& s) { return s.hatch_style == render::HatchStyle::Shader; }}},
         {"min-stroke", {"4.5", [](const RenderSettings& s) { return s.min_stroke == 4.5f; }}},
         {"simplify", {"0.75", [](const RenderSettings& s) { return s.simplify == 0.75f; }}},
         {"taper", {"8.5", [](const RenderSettings& s) { return s.taper == 8.5f; }}},

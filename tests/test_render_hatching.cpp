@@ -45,19 +45,23 @@ Window measure(const render::Image& image, glm::vec2 center, int half) {
 TEST_CASE("hatching strokes follow the principal directions, denser where darker", "[render][hatching]") {
     // Torus seen from straight above; at the front of the tube's top the
     // tube direction d1 (k1 = 1/r) runs up the image and the big circle
-    // direction d2 across it. The light comes from the right.
+    // direction d2 across it. The light comes from the right. Both styles:
+    // the streamlines and the shader's strokes (shaders/hatching/shader_hatching.glsl).
+    const render::HatchStyle style = GENERATE(render::HatchStyle::Streamlines, render::HatchStyle::Shader);
+    INFO("hatch style " << render::to_string(style));
     const Mesh torus = make_torus(1.0f, 0.4f, 160, 64);
     const SurfaceFields fields = test::torus_fields(torus, 1.0f, 0.4f);
     const auto camera = render::Camera::look_at({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 40.0f);
     const auto bounds = render::bounding_sphere(torus);
     auto s = test::lines_only({false, false, false});
     s.light_dir = glm::normalize(glm::vec3(0.85f, 0, 0.53f));
+    s.hatch_style = style;
     const glm::vec2 front_top = test::project(camera, bounds, {0, -1, 0.4f}, kSize, kSize);
 
     SECTION("max: strokes along d1, vertical here") {
         s.hatching = render::Hatching::Max;
         const auto image = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
-        test::maybe_save(image, "torus_hatch_max");
+        test::maybe_save(image, "torus_hatch_max_" + render::to_string(style));
         const Window w = measure(image, front_top, 12);
         INFO("horizontal variation " << w.horizontal << ", vertical " << w.vertical);
         CHECK(w.horizontal > 3 * w.vertical);
@@ -65,7 +69,7 @@ TEST_CASE("hatching strokes follow the principal directions, denser where darker
     SECTION("min: strokes along d2, horizontal here") {
         s.hatching = render::Hatching::Min;
         const auto image = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
-        test::maybe_save(image, "torus_hatch_min");
+        test::maybe_save(image, "torus_hatch_min_" + render::to_string(style));
         const Window w = measure(image, front_top, 12);
         INFO("horizontal variation " << w.horizontal << ", vertical " << w.vertical);
         CHECK(w.vertical > 3 * w.horizontal);
@@ -73,7 +77,7 @@ TEST_CASE("hatching strokes follow the principal directions, denser where darker
     SECTION("cross: both directions in darker tones, ink follows the tone") {
         s.hatching = render::Hatching::Cross;
         const auto image = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
-        test::maybe_save(image, "torus_hatch_cross");
+        test::maybe_save(image, "torus_hatch_cross_" + render::to_string(style));
         // Inner walls of the tube, v = 150 degrees: the right one faces away
         // from the light, the left one faces it (n = light).
         const glm::vec2 dark = test::project(camera, bounds, {0.654f, 0, 0.2f}, kSize, kSize);

@@ -88,6 +88,9 @@ ScriptStep parse_step(const LineParser& p, int line) {
     } else if (cmd == "wait-compute") {
         p.expect_count(1, 1, "wait-compute");
         s.kind = ScriptStep::WaitCompute;
+    } else if (cmd == "wait-hatching") {
+        p.expect_count(1, 1, "wait-hatching");
+        s.kind = ScriptStep::WaitHatching;
     } else if (cmd == "screenshot") {
         p.expect_count(2, 3, "screenshot PATH [panel|no-panel]");
         s.kind = ScriptStep::Screenshot;
@@ -102,8 +105,8 @@ ScriptStep parse_step(const LineParser& p, int line) {
         s.value = p.word(1);
     } else {
         p.fail("unknown step '" + cmd +
-               "' (steps: frames, drag, scroll, key, set, panel, wait-compute, screenshot, save-view, load-view, "
-               "open)");
+               "' (steps: frames, drag, scroll, key, set, panel, wait-compute, wait-hatching, screenshot, save-view, "
+               "load-view, open)");
     }
     return s;
 }

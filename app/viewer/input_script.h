@@ -13,6 +13,8 @@
 //                                  set lines contours   set shading none   set smooth-curvature 0.01
 //   panel on|off                   show or hide the panel
 //   wait-compute                   wait until background curvature has finished
+//   wait-hatching                  wait until the streamline hatching of the view at
+//                                  rest is drawn (the shader's strokes until then)
 //   screenshot PATH [panel|no-panel]   (.svg or .pdf: the drawing area as vector strokes)
 //                                  PNG of the whole window (default), or of the
 //                                  drawing alone, as `kappa render` would write it
@@ -28,7 +30,7 @@
 namespace kappa::viewer {
 
 struct ScriptStep {
-    enum Kind { Frames, Drag, Scroll, Key, Set, Panel, WaitCompute, Screenshot, SaveView, LoadView, Open };
+    enum Kind { Frames, Drag, Scroll, Key, Set, Panel, WaitCompute, WaitHatching, Screenshot, SaveView, LoadView, Open };
     Kind kind = Frames;
     int line = 0;          // in the script file, for messages
     int count = 1;         // frames; drag moves

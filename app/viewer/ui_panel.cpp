@@ -136,7 +136,10 @@ void surface_section(render::RenderSettings& s, float map_range) {
             ImGui::Text("range [-%.4g, %.4g]", map_range, map_range);
     }
     setting_widget("hatching", s);
-    if (s.hatching != render::Hatching::None) setting_slider("hatch-spacing", s);
+    if (s.hatching != render::Hatching::None) {
+        setting_slider("hatch-spacing", s);
+        setting_widget("hatch-style", s);
+    }
     setting_slider("background", s);
     setting_widget("msaa", s);
 }

@@ -83,6 +83,10 @@ void ViewerApp::open_window() {
     window_ = render::WindowContext::create(wo);
     renderer_ = std::make_unique<render::Renderer>();
     renderer_->set_complete_frames(false);  // a frame never waits for the compute path's segment count
+    // Streamline hatching traced in the background once the view rests, the shader's strokes until then;
+    // the worker wakes the event loop when they are ready.
+    renderer_->set_interactive_hatching(true);
+    renderer_->set_hatching_done([] { glfwPostEmptyEvent(); });
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -116,7 +120,7 @@ int ViewerApp::run() {
 void ViewerApp::wait_for_events() {
     if (drag_button_ >= 0) {
         glfwPollEvents();  // orbiting: as many frames as the machine draws
-    } else if (compute_.busy()) {
+    } else if (compute_.busy() || renderer_->hatching_pending()) {
         glfwWaitEventsTimeout(0.05);  // the progress bar moves; the computation gets the cores
     } else if (options_.scripted() || redraw_frames_ > 0) {
         glfwPollEvents();
@@ -249,7 +253,14 @@ void ViewerApp::draw_frame() {
     if (reduced) settings.msaa = false;
     if (quick_frame_) redraw_frames_ = std::max(redraw_frames_, 1);
     quick_frame_ = false;
-    renderer_->render_offscreen(camera(), settings, area.pixels.x, area.pixels.y);
+    // The view moves while dragging and in any frame whose view differs from the last one's.
+    const render::Camera view = camera();
+    const bool moving = drag_button_ >= 0 || view.view != last_view_.view || view.fov_y_deg != last_view_.fov_y_deg ||
+                        area.pixels != last_view_size_;
+    last_view_ = view, last_view_size_ = area.pixels;
+    renderer_->set_view_moving(moving);
+    if (moving && settings.hatching != render::Hatching::None) redraw_frames_ = std::max(redraw_frames_, 1);
+    renderer_->render_offscreen(view, settings, area.pixels.x, area.pixels.y);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glViewport(0, 0, fb.x, fb.y);
     glClearColor(0.1f, 0.1f, 0.1f, 1);

@@ -111,6 +111,8 @@ private:
     std::vector<float> still_ms_, moving_ms_;  // every frame with a model, reported after scripted runs
     bool full_quality_slow_ = false;  // the last full-quality frame took over 33 ms
     bool quick_frame_ = false;        // draw the next frame without MSAA (a big mesh just arrived)
+    render::Camera last_view_;        // the last frame's view: another one means the view moves
+    glm::ivec2 last_view_size_{0};
     float upload_s_ = 0, first_frame_s_ = 0;
     bool first_frame_drawn_ = false;
 

@@ -177,9 +177,11 @@ void ViewerApp::save_screenshot(const std::string& path, bool with_panel) {
         // Without the panel: the drawing area, rendered as `kappa render` would.
         const Area a = drawing_area();
         const glm::ivec2 fb = window_->framebuffer_size();
+        renderer_->set_interactive_hatching(false);  // as kappa render: the streamlines of this very view
         const render::Image image = with_panel ? read_window(fb.x, fb.y)
                                                : render::render_to_image(*renderer_, camera(), state_.settings,
                                                                          a.pixels.x, a.pixels.y);
+        renderer_->set_interactive_hatching(true);
         render::write_image(path, image);
         report("wrote " + path);
     } catch (const std::exception& e) {

@@ -29,6 +29,11 @@ bool ViewerApp::script_step() {
         case ScriptStep::WaitCompute:
             if (compute_.busy() || compute_.view_busy() || view_fields_stale()) return true;
             break;
+        case ScriptStep::WaitHatching:
+            if (state_.settings.hatching != render::Hatching::None &&
+                state_.settings.hatch_style == render::HatchStyle::Streamlines && !renderer_->drew_streamlines())
+                return true;
+            break;
         case ScriptStep::Drag:
             // The same handlers as real mouse events: press, one move a frame, release.
             if (drag_moves_ == 0) mouse_button(s.button, true, s.from);

@@ -8,7 +8,7 @@
 namespace kappa::render {
 
 HatchFieldPass::HatchFieldPass()
-    : program_({{GL_VERTEX_SHADER, {"common/mesh_attributes.glsl", "hatching/hatch_field_vert.glsl"}},
+    : program_({{GL_VERTEX_SHADER, {"common/mesh_attributes.glsl", "hatching/window_directions.glsl", "hatching/hatch_field_vert.glsl"}},
                 {GL_FRAGMENT_SHADER, {"hatching/hatch_field_frag.glsl"}}}) {}
 
 HatchField HatchFieldPass::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {

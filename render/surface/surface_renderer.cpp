@@ -5,7 +5,8 @@
 namespace kappa::render {
 
 bool surface_is_background(const RenderSettings& s) {
-    return s.shading == Shading::None && s.colormap == ColorMap::None && s.background == glm::vec4(1.0f);
+    return s.shading == Shading::None && s.colormap == ColorMap::None && s.background == glm::vec4(1.0f) &&
+           !shader_hatching(s);
 }
 
 SurfaceRenderer::SurfaceRenderer()
@@ -13,14 +14,22 @@ SurfaceRenderer::SurfaceRenderer()
                 {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "surface/surface_frag.glsl"}}}),
       plain_({{GL_VERTEX_SHADER, {"surface/surface_plain_vert.glsl"}},
               {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "surface/surface_frag.glsl"}}}),
-      paper_({{GL_VERTEX_SHADER, {"surface/surface_paper_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"surface/surface_paper_frag.glsl"}}}) {}
+      paper_({{GL_VERTEX_SHADER, {"surface/surface_paper_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"surface/surface_paper_frag.glsl"}}}),
+      hatched_({{GL_VERTEX_SHADER,
+                 {"common/mesh_attributes.glsl", "common/colormap.glsl", "hatching/window_directions.glsl",
+                  "surface/surface_vert.glsl"},
+                 "#define KAPPA_HATCHING\n"},
+                {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "hatching/shader_hatching.glsl", "surface/surface_frag.glsl"},
+                 "#define KAPPA_HATCHING\n"}}) {}
 
 void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    ShaderProgram& p = s.shading == Shading::None && s.colormap == ColorMap::None ? paper_  // depth is all that varies
+    const bool hatched = shader_hatching(s);
+    ShaderProgram& p = hatched ? hatched_
+                       : s.shading == Shading::None && s.colormap == ColorMap::None ? paper_  // depth is all that varies
                        : s.colormap == ColorMap::None                             ? plain_
                                                                                   : program_;
     p.use();
@@ -33,6 +42,16 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         p.set("u_light", camera_light_direction(s, frame));
         p.set("u_colormap", int(s.colormap));
         p.set("u_map_range", mesh.map_range(s.colormap));
+    }
+    if (hatched) {
+        // Hatching enum order: none, min (along d2), max (along d1), cross; the shader's: none, d1, d2, both.
+        const int family[] = {0, 2, 1, 3};
+        p.set("u_hatching", family[int(s.hatching)]);
+        p.set("u_hatch_spacing", s.hatch_spacing);
+        p.set("u_hatch_width", s.hatch_stroke_width);
+        p.set("u_line_color", s.line_color);
+        p.set("u_viewport", frame.viewport);
+        p.set("u_feature_size", mesh.feature_size());
     }
     draw_surface_triangles(mesh, frame, back_face_culling_, &p == &paper_);
     if (depth_only) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

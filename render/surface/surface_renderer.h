@@ -1,5 +1,7 @@
 // Surface pass: fills colour and depth with the shaded surface (paper,
-// Lambert, toon, hemisphere, Gooch; colour maps).
+// Lambert, toon, hemisphere, Gooch; colour maps), and with --hatch-style
+// shader its hatching (shaders/hatching/shader_hatching.glsl): no readback,
+// no tracing, no other pass.
 #pragma once
 
 #include "render/camera/frame_params.h"
@@ -10,7 +12,7 @@
 namespace kappa::render {
 
 // True when the surface pass leaves every pixel the background's colour: a
-// white unlit surface (no shading, no colour map) on opaque white. Its
+// white unlit surface (no shading, no colour map, no shader hatching) on opaque white. Its
 // colour is then not written, and multisampling has no edge to smooth.
 bool surface_is_background(const RenderSettings& settings);
 
@@ -44,6 +46,7 @@ private:
     ShaderProgram program_;
     ShaderProgram plain_;  // without a colour map: reads only positions and normals
     ShaderProgram paper_;  // white paper, no colour map: positions only, nothing to interpolate
+    ShaderProgram hatched_;  // any shading and colour map, with the shader hatching's strokes (--hatch-style shader)
     bool back_face_culling_ = true;
 };
 

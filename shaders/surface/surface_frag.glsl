@@ -1,9 +1,14 @@
 // Surface pass, fragment stage: paper, Lambertian, toon (grey and white, or
 // black and white), hemisphere or Gooch (cool to warm, Gooch et al. 1998)
-// shading and a curvature colour map (hatching strokes are drawn by the
-// line passes). Output is premultiplied RGBA (opaque).
+// shading and a curvature colour map; with KAPPA_HATCHING the shader
+// hatching's strokes over it (hatching/shader_hatching.glsl; streamline
+// hatching is drawn by the line passes). Output is premultiplied RGBA (opaque).
 in vec3 v_normal;
 in vec2 v_map_value;
+#ifdef KAPPA_HATCHING
+in vec4 v_hatch_dirs;
+uniform vec3 u_line_color;
+#endif
 
 uniform int u_shading;      // 0 none (white paper), 1 Lambert, 2 toon, 3 hemisphere, 4 toon-bw, 5 Gooch
 uniform vec3 u_light;       // unit, towards the light, camera coordinates
@@ -28,7 +33,14 @@ void main() {
         float k = 0.5 + 0.5 * dot(n, u_light);
         vec3 cool = vec3(0.25, 0.3, 0.75) + 0.25 * albedo, warm = vec3(0.85, 0.75, 0.25) + 0.25 * albedo;
         o_color = vec4(min(mix(cool, warm, k), vec3(1.0)), 1.0);
-        return;
+    } else {
+        o_color = vec4(albedo * light, 1.0);
     }
-    o_color = vec4(albedo * light, 1.0);
+#ifdef KAPPA_HATCHING
+    // The tone of the streamlines' field (render/hatching/hatch_field.h); none on back faces.
+    if (gl_FrontFacing) {
+        float darkness = clamp((0.95 - diffuse) / 0.8, 0.0, 1.0);
+        o_color.rgb = mix(o_color.rgb, u_line_color, hatch_coverage(gl_FragCoord.xy, darkness, v_hatch_dirs));
+    }
+#endif
 }
