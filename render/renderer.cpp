@@ -19,6 +19,7 @@ Renderer::Renderer() {
                    renderer.find("SwiftShader") != std::string::npos;
     cpu_line_raster_ = software_gl_;
     cpu_surface_depth_ = software_gl_;
+    hatching_in_surface_ = software_gl_;
 }
 Renderer::~Renderer() = default;
 
@@ -80,7 +81,11 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     }
     // Multisampling smooths the surface's edges: a surface the colour of the
     // background has none, and is drawn once per pixel (the same picture).
-    const bool msaa = s.msaa && !surface_is_background(s);
+    // Shader hatching: on software GL drawn by the surface pass per fragment (no other pass over
+    // the mesh), on a GPU once a pixel by its own passes (render/hatching/shader_hatching.h).
+    const bool hatch_in_surface = mesh_ && shader_hatching(s) && hatching_in_surface_;
+    const bool paper = surface_is_background(s) && !hatch_in_surface;
+    const bool msaa = s.msaa && !paper;
     ensure_buffers(w, h, msaa);
     glViewport(0, 0, w, h);
 
@@ -97,14 +102,14 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     // White paper under lines drawn on the CPU: its depth is all the frame needs of it, drawn on the
     // CPU (the GL's depth buffer is then not cleared: a GL pass that needs it gets the CPU's uploaded).
     const bool depth_on_cpu =
-        mesh_ && cpu_surface_depth_ && cpu_line_raster_ && cpu_lines && !msaa && surface_is_background(s);
+        mesh_ && cpu_surface_depth_ && cpu_line_raster_ && cpu_lines && !msaa && paper;
     glClear(depth_on_cpu ? GL_COLOR_BUFFER_BIT : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     FrameParams frame;
     if (mesh_) {
         frame = FrameParams::make(camera, mesh_->bounds(), w, h);
         if (any_lines && cpu_lines) line_pass_.begin_cpu_lines(*mesh_, frame, s);  // made while the surface is drawn
         cpu_depth_ = depth_on_cpu ? &depth_raster_.draw(*mesh_, frame, back_face_culling_) : nullptr;
-        if (!depth_on_cpu) surface_pass_.draw(*mesh_, frame, s);
+        if (!depth_on_cpu) surface_pass_.draw(*mesh_, frame, s, hatch_in_surface);
     } else {
         cpu_depth_ = nullptr;
     }
@@ -141,6 +146,10 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
         ink_ = InkArea();
     if (!cpu_raster && !strokes.empty()) {
         stroke_pass_.draw(strokes, frame, surface_fb_.depth_texture());
+        ink_.anywhere = true;
+    }
+    if (mesh_ && shader_hatching(s) && !hatch_in_surface) {
+        shader_hatching_.draw(*mesh_, frame, s, lines_fb_.id());
         ink_.anywhere = true;
     }
 

@@ -12,6 +12,7 @@
 #include "render/gl/framebuffer.h"
 #include "render/hatching/background_hatching.h"
 #include "render/hatching/hatch_field.h"
+#include "render/hatching/shader_hatching.h"
 #include "render/lines/line_renderer.h"
 #include "render/fields/mesh_buffers.h"
 #include "render/render_settings.h"
@@ -69,6 +70,7 @@ public:
     void set_back_face_culling(bool on) {
         surface_pass_.set_back_face_culling(on);
         hatch_field_.set_back_face_culling(on);
+        shader_hatching_.set_back_face_culling(on);
         back_face_culling_ = on;
     }
     // Whether the depth of a surface the colour of the paper is drawn on the
@@ -87,6 +89,10 @@ public:
     bool hatching_pending() const { return background_hatching_.pending(); }
     // The last frame was hatched with traced streamlines (not the shader's strokes).
     bool drew_streamlines() const { return drew_streamlines_; }
+    // Whether --hatch-style shader is drawn by the surface pass per fragment
+    // (software GL's default: no other pass over the mesh) or once a pixel by
+    // its own passes (render/hatching/shader_hatching.h; GPUs). For tests and benchmarks.
+    void set_hatching_in_surface(bool in_surface) { hatching_in_surface_ = in_surface; }
     // Where this context extracts the lines of `settings` (never Auto; render_settings.h).
     LineExtraction line_path(const RenderSettings& settings) const;
     // With the compute path, whether every frame waits until its segment
@@ -108,6 +114,7 @@ private:
     SurfaceRenderer surface_pass_;
     LineRenderer line_pass_;
     HatchFieldPass hatch_field_;
+    ShaderHatchingPass shader_hatching_;
     BackgroundHatching background_hatching_;
     bool interactive_hatching_ = false, view_moving_ = false, drew_streamlines_ = false;
     StrokePass stroke_pass_;
@@ -120,6 +127,7 @@ private:
     bool software_gl_ = false;  // llvmpipe and the like: RenderSettings::line_extraction auto means CPU
     bool cpu_line_raster_ = false;  // software_gl_ unless set_cpu_line_raster
     bool cpu_surface_depth_ = false;  // software_gl_ unless set_cpu_surface_depth
+    bool hatching_in_surface_ = false;  // software_gl_ unless set_hatching_in_surface
     bool back_face_culling_ = true;
     DepthRaster depth_raster_;
     const std::vector<float>* cpu_depth_ = nullptr;  // the last frame's surface depth when drawn on the CPU (in depth_raster_)

@@ -209,3 +209,31 @@ TEST_CASE("hatching strokes are the same with back faces culled from the field p
         CHECK(same == points);
     }
 }
+
+TEST_CASE("shader hatching drawn once a pixel matches the surface pass's per-fragment strokes", "[render][hatching]") {
+    // Software GL draws --hatch-style shader in the surface pass; a GPU in a
+    // field pass and one full-screen pass (render/hatching/shader_hatching.h).
+    // The same strokes from the same directions; the tone is per vertex in the
+    // field pass and per fragment in the surface, so stroke widths differ a little.
+    const Mesh torus = make_torus(1.0f, 0.4f, 160, 64);
+    const SurfaceFields fields = test::torus_fields(torus, 1.0f, 0.4f);
+    const auto camera = render::Camera::look_at({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 40.0f);
+    auto s = test::lines_only({false, false, false});
+    s.light_dir = glm::normalize(glm::vec3(0.85f, 0, 0.53f));
+    s.hatching = render::Hatching::Cross;
+    s.hatch_style = render::HatchStyle::Shader;
+    render::Renderer& r = test::renderer();
+    r.set_hatching_in_surface(true);
+    const auto in_surface = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
+    r.set_hatching_in_surface(false);
+    const auto deferred = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
+    r.set_hatching_in_surface(true);
+    test::maybe_save(in_surface, "torus_shader_in_surface");
+    test::maybe_save(deferred, "torus_shader_deferred");
+    const size_t ink = test::count_ink(in_surface);
+    const double near = render::ink_within(in_surface, deferred, 1.0f), back = render::ink_within(deferred, in_surface, 1.0f);
+    INFO(ink << " ink pixels; within 1 px: " << near << ", back " << back);
+    CHECK(ink > 5000);
+    CHECK(near > 0.95);
+    CHECK(back > 0.95);
+}

@@ -5,8 +5,7 @@
 namespace kappa::render {
 
 bool surface_is_background(const RenderSettings& s) {
-    return s.shading == Shading::None && s.colormap == ColorMap::None && s.background == glm::vec4(1.0f) &&
-           !shader_hatching(s);
+    return s.shading == Shading::None && s.colormap == ColorMap::None && s.background == glm::vec4(1.0f);
 }
 
 SurfaceRenderer::SurfaceRenderer()
@@ -22,19 +21,19 @@ SurfaceRenderer::SurfaceRenderer()
                 {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "hatching/shader_hatching.glsl", "surface/surface_frag.glsl"},
                  "#define KAPPA_HATCHING\n"}}) {}
 
-void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
+void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool hatched) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    const bool hatched = shader_hatching(s);
+    hatched = hatched && shader_hatching(s);
     ShaderProgram& p = hatched ? hatched_
                        : s.shading == Shading::None && s.colormap == ColorMap::None ? paper_  // depth is all that varies
                        : s.colormap == ColorMap::None                             ? plain_
                                                                                   : program_;
     p.use();
     p.set("u_mvp", frame.mvp);
-    const bool depth_only = surface_is_background(s);  // the colour stays the cleared white
+    const bool depth_only = surface_is_background(s) && !hatched;  // the colour stays the cleared white
     if (depth_only) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     if (&p != &paper_) {
         p.set("u_normal_matrix", frame.normal_matrix);

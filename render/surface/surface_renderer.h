@@ -1,7 +1,5 @@
 // Surface pass: fills colour and depth with the shaded surface (paper,
-// Lambert, toon, hemisphere, Gooch; colour maps), and with --hatch-style
-// shader its hatching (shaders/hatching/shader_hatching.glsl): no readback,
-// no tracing, no other pass.
+// Lambert, toon, hemisphere, Gooch; colour maps).
 #pragma once
 
 #include "render/camera/frame_params.h"
@@ -12,7 +10,7 @@
 namespace kappa::render {
 
 // True when the surface pass leaves every pixel the background's colour: a
-// white unlit surface (no shading, no colour map, no shader hatching) on opaque white. Its
+// white unlit surface (no shading, no colour map) on opaque white. Its
 // colour is then not written, and multisampling has no edge to smooth.
 bool surface_is_background(const RenderSettings& settings);
 
@@ -39,14 +37,17 @@ public:
     SurfaceRenderer();  // compiles the shaders (GL context current)
     // Draws into the bound framebuffer with depth testing.
     // Back faces are culled where none can be seen (render/surface/back_face_culling.h).
-    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings);
+    // hatched: with --hatch-style shader, the strokes of shaders/hatching/shader_hatching.glsl
+    // drawn into the surface's colour per fragment (software GL: no other pass;
+    // on a GPU render/hatching/shader_hatching.h draws them once a pixel instead).
+    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool hatched = false);
     void set_back_face_culling(bool on) { back_face_culling_ = on; }  // for tests: off draws every face
 
 private:
     ShaderProgram program_;
     ShaderProgram plain_;  // without a colour map: reads only positions and normals
     ShaderProgram paper_;  // white paper, no colour map: positions only, nothing to interpolate
-    ShaderProgram hatched_;  // any shading and colour map, with the shader hatching's strokes (--hatch-style shader)
+    ShaderProgram hatched_;  // any shading and colour map, with the shader hatching's strokes
     bool back_face_culling_ = true;
 };
 

@@ -1,6 +1,6 @@
 // Hatching drawn on the GPU (--hatch-style shader, and the viewer while the
 // view moves; render/hatching/shader_hatching.h): no readback and no tracing
-// on the CPU. Strokes run along the principal direction projected into the
+// on the CPU, once a pixel. Strokes run along the principal direction projected into the
 // window, two spacings apart (the streamlines' spacing at half darkness,
 // render/hatching/hatch_streamlines.h); the tone is in their width and ink,
 // as an engraver swells a line, from nothing below darkness 1/8 (where the
@@ -17,7 +17,7 @@
 // sinusoid across the stroke direction under a smooth window; its phase makes
 // stripes of even contrast and spacing that bend with the direction field,
 // where a sum of the kernels' real parts (Gabor noise) would fade in and
-// out. Each fragment evaluates the kernels around it with its own direction
+// out. Each pixel evaluates the kernels around it with its own direction
 // (the principal direction interpolated over the triangle, as a doubled
 // angle): the stripes follow it as long as it turns slowly across a kernel
 // (two wavelengths).
