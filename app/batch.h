@@ -1,5 +1,5 @@
 // `kappa batch`: many meshes, many views and outputs from one manifest
-// (README, "kappa batch"). The manifest has one job a line:
+// (docs/batch.md). The manifest has one job a line:
 //
 //   # comment
 //   MESH  OUTPUT  [OPTIONS...]

@@ -254,7 +254,7 @@ Parser& Parser::smoothing(SmoothingOptions& out) {
     option(
         "--estimator", "NAME",
         "curvature estimator: " + join(estimator_names(), ", ") +
-            " (default rusinkiewicz; README, 'Curvature estimators')",
+            " (default rusinkiewicz; docs/estimators-and-accuracy.md)",
         [&out](const std::string& value) {
             const auto e = parse_estimator(value);
             if (e) out.estimator = *e;

@@ -23,7 +23,7 @@ int run_batch(int argc, char** argv) {
                   "'MESH OUTPUT [OPTIONS...]', the options those of 'kappa render' (OUTPUT .png .jpg .svg .pdf) "
                   "or 'kappa curvature' (.csv .ply). Each mesh is read once and every view drawn on one GL "
                   "context; outputs that exist are skipped; failures are listed at the end (exit status 1).");
-    p.positional("MANIFEST", manifest, "the jobs, one a line (README, 'kappa batch')", true)
+    p.positional("MANIFEST", manifest, "the jobs, one a line (docs/batch.md)", true)
         .option("--shard", "I/N",
                 "run only shard I of N (0 <= I < N): the meshes numbered I, I+N, I+2N, ... in order of first "
                 "appearance, so that N processes (a Slurm array, say) share the manifest",

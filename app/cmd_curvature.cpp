@@ -61,10 +61,10 @@ int run_curvature(int argc, char** argv) {
                 "(d1,d2) frame. The PLY output carries the same values as vertex properties, plus 'flags'\n"
                 "(1 isolated, 2 degenerate, 4 boundary, 8 non-manifold, 16 estimator fallback).\n"
                 "--estimator jet is the most accurate (a noise-adaptive osculating jet); the others are the\n"
-                "paper's comparison methods (README, 'Curvature estimators').\n"
+                "paper's comparison methods (docs/estimators-and-accuracy.md).\n"
                 "Smoothing is off by default (the raw estimate, reproducible). For scans and other noisy\n"
                 "meshes use --smooth auto: it estimates the noise and chooses the widths, printed in the\n"
-                "summary and written in the PLY header (README, 'kappa curvature').\n"
+                "summary and written in the PLY header (docs/detail-and-noise.md).\n"
                 "Example: kappa curvature scan.ply -o scan.ply --smooth auto");
     if (auto status = p.parse(argc, argv)) return *status;
     if (out_path.empty()) {

@@ -70,7 +70,7 @@ int run_info(int argc, char** argv) {
             "vertex count separately); isolated vertices (no face) are not components.\n"
             "The feature size fs is the median smaller radius of curvature over reliable\n"
             "vertices, clamped to [median edge length, bounding-sphere radius];\n"
-            "thresholds on suggestive contours scale by 1/fs^2 (README, 'How curvature is computed').");
+            "thresholds on suggestive contours scale by 1/fs^2 (docs/curvature.md).");
     if (auto status = p.parse(argc, argv)) return *status;
 
     auto start = std::chrono::steady_clock::now();

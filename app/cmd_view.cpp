@@ -63,7 +63,7 @@ int run_view(int argc, char** argv) {
         .text("--screenshot", o.screenshot, "PNG of the whole window, panel included, after --frames", "OUT.png")
         .text("--script", script_path,
               "synthetic input, one step a line: frames N, drag X0 Y0 X1 Y1, scroll X Y N, key K, set NAME "
-              "VALUE, screenshot PATH, ... (README, 'Viewer')", "FILE")
+              "VALUE, screenshot PATH, ... (docs/viewer.md)", "FILE")
         .threads()
         .epilog(keys_help() +
                 "Without a display (no X server) it exits with status 1: use 'kappa render' to render headless.\n"

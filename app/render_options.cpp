@@ -22,7 +22,7 @@ void add_render_options(cli::Parser& p, RenderOptions& o) {
         .option("--view", "AZ,EL",
                 "view from azimuth AZ (degrees around the y axis, 0 = from +z, 90 = from +x) and elevation EL "
                 "(degrees above the xz plane), framing the model (default: a three-quarter view chosen per "
-                "mesh, README 'Default view')",
+                "mesh, docs/rendering.md, 'The default view')",
                 [&c](const std::string& v) {
                     const auto parts = cli::split(v, ',');
                     if (parts.size() != 2) return false;
@@ -66,7 +66,7 @@ void finish_render_options(const cli::Parser& p, RenderOptions& o) {
     if (!c.xf_path.empty() && (look_at || c.view))
         throw p.error("--xf cannot be combined with --view/--eye/--target/--up");
     if (c.view && (c.has_eye || c.has_target)) throw p.error("--view cannot be combined with --eye/--target");
-    // Explicit smoothing widths override the detail setting (README, "kappa render").
+    // Explicit smoothing widths override the detail setting (docs/detail-and-noise.md).
     // So does an estimator other than the default: the scale space is built on the paper's fits,
     // so the chosen estimator's own per-vertex fields are drawn.
     if (p.seen("--smooth-normals") || p.seen("--smooth-curvature") || p.seen("--smooth-dcurv") ||

@@ -42,8 +42,8 @@ void add_render_options(cli::Parser& p, RenderOptions& options);
 
 // After p.parse: records which camera options were given and checks them
 // together (throws cli::UsageError "kappa CMD: problem"). Explicit smoothing
-// widths and estimators other than the default turn --detail off (README,
-// "kappa render").
+// widths and estimators other than the default turn --detail off
+// (docs/detail-and-noise.md).
 void finish_render_options(const cli::Parser& p, RenderOptions& options);
 
 // Whether two curvature settings ask for the same fields.

@@ -80,7 +80,7 @@ void def_batch(py::module_& m) {
         },
         py::arg("manifest"), py::kw_only(), py::arg("shard") = py::none(), py::arg("skip_existing") = true,
         py::arg("progress") = false, py::arg("base_dir") = py::none(),
-        R"(Runs a batch manifest as `kappa batch` does (README, "kappa batch"), never stopping at a failure.
+        R"(Runs a batch manifest as `kappa batch` does (docs/batch.md), never stopping at a failure.
 
 manifest: a path (relative paths inside are relative to its folder) or a list of lines
   'MESH OUTPUT [OPTIONS...]' (relative to base_dir, else the current directory).

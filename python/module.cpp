@@ -14,7 +14,7 @@ PYBIND11_MODULE(kappa, m) {
     lines = kappa.strokes(V, F, lines="contours,suggestive")
     report = kappa.batch("jobs.txt", shard=(0, 4))     # as `kappa batch jobs.txt --shard 0/4`
 
-Options are the command line's, with '-' spelled '_' (README, "Python").)";
+Options are the command line's, with '-' spelled '_' (docs/python.md).)";
     // Usage errors raised in C++ after parsing (checks of options together).
     py::register_exception_translator([](std::exception_ptr p) {
         try {

@@ -163,7 +163,7 @@ bool smoothing_section(SmoothingOptions& sm, const Model* model, bool computing,
             }
         ImGui::EndCombo();
     }
-    // auto: widths left at 0 are chosen from the mesh's noise level (README, "kappa curvature").
+    // auto: widths left at 0 are chosen from the mesh's noise level (docs/detail-and-noise.md).
     if (ImGui::Checkbox("auto (from the noise level)", &sm.automatic)) recompute = true;
     width("normals", sm.normals);
     width("curvature", sm.curvature);

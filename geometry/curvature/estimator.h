@@ -1,5 +1,5 @@
-// Which curvature estimator compute_surface_fields uses (README,
-// "Curvature estimators"). Every estimator fills the same SurfaceFields.
+// Which curvature estimator compute_surface_fields uses
+// (docs/estimators-and-accuracy.md). Every estimator fills the same SurfaceFields.
 #pragma once
 
 #include <optional>

@@ -15,7 +15,7 @@ namespace kappa::io {
 // the length written when closed (or abandoned). Truncating a big file
 // first makes the kernel free every page of it and then allocate them all
 // again for the new bytes: for a 55 MB PLY rewritten by the same job, 5-10%
-// of `kappa curvature bunny-1M.ply`'s time (README, Speed).
+// of `kappa curvature bunny-1M.ply`'s time (docs/speed.md).
 OutputFile::OutputFile(const std::string& path) : path_(path) {
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0) fail("cannot open for writing", errno);
