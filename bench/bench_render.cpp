@@ -55,8 +55,14 @@ double cpu_ms() {
 FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& camera, const render::RenderSettings& s,
                           const render::Framebuffer& target, int frames) {
     const int w = target.spec().width, h = target.spec().height;
-    renderer.render_offscreen(camera, s, w, h);  // as kappa render draws  // warm-up: shader compilation, buffer allocation
-    glFinish();
+    // Warm-up: shader compilation, buffer allocation, and at least 0.3 s of frames, so that a GPU
+    // whose clocks fell during a slow configuration (streamline hatching waits on the CPU) is back
+    // at speed: measured after the slow one without this, frames took up to 4 times as long.
+    const auto warm_start = std::chrono::steady_clock::now();
+    do {
+        renderer.render_offscreen(camera, s, w, h);  // as kappa render draws
+        glFinish();
+    } while (std::chrono::steady_clock::now() - warm_start < std::chrono::milliseconds(300));
     std::vector<double> wall, cpu;
     for (int i = 0; i < frames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();

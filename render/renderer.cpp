@@ -81,10 +81,11 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     }
     // Multisampling smooths the surface's edges: a surface the colour of the
     // background has none, and is drawn once per pixel (the same picture).
-    // Shader hatching: on software GL drawn by the surface pass per fragment (no other pass over
-    // the mesh), on a GPU once a pixel by its own passes (render/hatching/shader_hatching.h).
+    // Shader hatching: on software GL drawn by the surface pass per fragment, on a GPU once a pixel
+    // from targets the surface pass fills (render/hatching/shader_hatching.h).
     const bool hatch_in_surface = mesh_ && shader_hatching(s) && hatching_in_surface_;
-    const bool paper = surface_is_background(s) && !hatch_in_surface;
+    const bool hatch_targets = mesh_ && shader_hatching(s) && !hatching_in_surface_;
+    const bool paper = surface_is_background(s) && !(mesh_ && shader_hatching(s));
     const bool msaa = s.msaa && !paper;
     ensure_buffers(w, h, msaa);
     glViewport(0, 0, w, h);
@@ -109,7 +110,14 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
         frame = FrameParams::make(camera, mesh_->bounds(), w, h);
         if (any_lines && cpu_lines) line_pass_.begin_cpu_lines(*mesh_, frame, s);  // made while the surface is drawn
         cpu_depth_ = depth_on_cpu ? &depth_raster_.draw(*mesh_, frame, back_face_culling_) : nullptr;
-        if (!depth_on_cpu) surface_pass_.draw(*mesh_, frame, s, hatch_in_surface);
+        if (!depth_on_cpu) {
+            if (hatch_targets) shader_hatching_.attach(draw_fb.id(), w, h, msaa ? 4 : 0);
+            surface_pass_.draw(*mesh_, frame, s,
+                               hatch_in_surface ? SurfaceHatching::Strokes
+                               : hatch_targets  ? SurfaceHatching::Targets
+                                                : SurfaceHatching::None);
+            if (hatch_targets) shader_hatching_.detach(draw_fb.id());
+        }
     } else {
         cpu_depth_ = nullptr;
     }
@@ -148,8 +156,8 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
         stroke_pass_.draw(strokes, frame, surface_fb_.depth_texture());
         ink_.anywhere = true;
     }
-    if (mesh_ && shader_hatching(s) && !hatch_in_surface) {
-        shader_hatching_.draw(*mesh_, frame, s, lines_fb_.id());
+    if (hatch_targets) {
+        shader_hatching_.draw(frame, s, lines_fb_.id());
         ink_.anywhere = true;
     }
 

@@ -70,7 +70,6 @@ public:
     void set_back_face_culling(bool on) {
         surface_pass_.set_back_face_culling(on);
         hatch_field_.set_back_face_culling(on);
-        shader_hatching_.set_back_face_culling(on);
         back_face_culling_ = on;
     }
     // Whether the depth of a surface the colour of the paper is drawn on the
@@ -90,8 +89,8 @@ public:
     // The last frame was hatched with traced streamlines (not the shader's strokes).
     bool drew_streamlines() const { return drew_streamlines_; }
     // Whether --hatch-style shader is drawn by the surface pass per fragment
-    // (software GL's default: no other pass over the mesh) or once a pixel by
-    // its own passes (render/hatching/shader_hatching.h; GPUs). For tests and benchmarks.
+    // (software GL's default) or once a pixel from targets the surface pass
+    // fills (render/hatching/shader_hatching.h; GPUs). For tests and benchmarks.
     void set_hatching_in_surface(bool in_surface) { hatching_in_surface_ = in_surface; }
     // Where this context extracts the lines of `settings` (never Auto; render_settings.h).
     LineExtraction line_path(const RenderSettings& settings) const;

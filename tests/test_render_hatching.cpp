@@ -211,10 +211,11 @@ TEST_CASE("hatching strokes are the same with back faces culled from the field p
 }
 
 TEST_CASE("shader hatching drawn once a pixel matches the surface pass's per-fragment strokes", "[render][hatching]") {
-    // Software GL draws --hatch-style shader in the surface pass; a GPU in a
-    // field pass and one full-screen pass (render/hatching/shader_hatching.h).
-    // The same strokes from the same directions; the tone is per vertex in the
-    // field pass and per fragment in the surface, so stroke widths differ a little.
+    // Software GL draws --hatch-style shader in the surface pass; a GPU from
+    // targets the surface pass fills, in one full-screen pass
+    // (render/hatching/shader_hatching.h): the same strokes from the same
+    // directions and tone, once a pixel instead of per fragment. With 4x
+    // multisampling the targets are resolved (averaged) first.
     const Mesh torus = make_torus(1.0f, 0.4f, 160, 64);
     const SurfaceFields fields = test::torus_fields(torus, 1.0f, 0.4f);
     const auto camera = render::Camera::look_at({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 40.0f);
@@ -227,6 +228,8 @@ TEST_CASE("shader hatching drawn once a pixel matches the surface pass's per-fra
     const auto in_surface = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
     r.set_hatching_in_surface(false);
     const auto deferred = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
+    s.msaa = true;
+    const auto deferred_msaa = test::render(torus, fields, 0.4f, camera, s, kSize, kSize);
     r.set_hatching_in_surface(true);
     test::maybe_save(in_surface, "torus_shader_in_surface");
     test::maybe_save(deferred, "torus_shader_deferred");
@@ -236,4 +239,9 @@ TEST_CASE("shader hatching drawn once a pixel matches the surface pass's per-fra
     CHECK(ink > 5000);
     CHECK(near > 0.95);
     CHECK(back > 0.95);
+    const double msaa_near = render::ink_within(in_surface, deferred_msaa, 1.0f);
+    const double msaa_back = render::ink_within(deferred_msaa, in_surface, 1.0f);
+    INFO("multisampled: within 1 px " << msaa_near << ", back " << msaa_back);
+    CHECK(msaa_near > 0.95);
+    CHECK(msaa_back > 0.95);
 }

@@ -1,27 +1,10 @@
 #include "render/hatching/shader_hatching.h"
 
-#include "render/surface/surface_renderer.h"
-
 namespace kappa::render {
 
-ShaderHatchingPass::ShaderHatchingPass()
-    : field_({{GL_VERTEX_SHADER,
-               {"common/mesh_attributes.glsl", "hatching/window_directions.glsl", "hatching/hatch_vectors_vert.glsl"}},
-              {GL_FRAGMENT_SHADER, {"hatching/hatch_vectors_frag.glsl"}}}),
-      strokes_({{GL_VERTEX_SHADER, {"common/fullscreen_vert.glsl"}},
-                {GL_FRAGMENT_SHADER, {"hatching/shader_hatching.glsl", "hatching/hatch_strokes_frag.glsl"}}}) {
-    glGenVertexArrays(1, &vao_);
-}
-
-ShaderHatchingPass::~ShaderHatchingPass() {
-    glDeleteVertexArrays(1, &vao_);
-    glDeleteFramebuffers(1, &fbo_);
-    const GLuint textures[] = {directions_, darkness_};
-    glDeleteTextures(2, textures);
-    glDeleteRenderbuffers(1, &depth_);
-}
-
 namespace {
+
+constexpr GLenum kDirectionsFormat = GL_RGBA16F, kDarknessFormat = GL_R8;
 
 void nearest_texture(GLuint texture, GLenum internal_format, GLenum format, GLenum type, int width, int height) {
     glBindTexture(GL_TEXTURE_2D, texture);
@@ -31,61 +14,90 @@ void nearest_texture(GLuint texture, GLenum internal_format, GLenum format, GLen
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-}  // namespace
-
-void ShaderHatchingPass::ensure_targets(int width, int height) {
-    if (fbo_ && width == width_ && height == height_) return;
-    width_ = width, height_ = height;
-    if (!fbo_) {
-        glGenFramebuffers(1, &fbo_);
-        glGenTextures(1, &directions_);
-        glGenTextures(1, &darkness_);
-        glGenRenderbuffers(1, &depth_);
-    }
-    nearest_texture(directions_, GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, width, height);
-    nearest_texture(darkness_, GL_R8, GL_RED, GL_UNSIGNED_BYTE, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+void multisampled_storage(GLuint renderbuffer, GLenum internal_format, int samples, int width, int height) {
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, internal_format, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, directions_, 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, darkness_, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, buffers);
 }
 
-void ShaderHatchingPass::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
-                              GLuint coverage_framebuffer) {
-    const int w = int(frame.viewport.x), h = int(frame.viewport.y);
-    ensure_targets(w, h);
+}  // namespace
 
-    // 1. The field of the visible surface.
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glViewport(0, 0, w, h);
+ShaderHatchingPass::ShaderHatchingPass()
+    : strokes_({{GL_VERTEX_SHADER, {"common/fullscreen_vert.glsl"}},
+                {GL_FRAGMENT_SHADER, {"hatching/shader_hatching.glsl", "hatching/hatch_strokes_frag.glsl"}}}) {
+    glGenVertexArrays(1, &vao_);
+    glGenTextures(1, &directions_);
+    glGenTextures(1, &darkness_);
+    glGenRenderbuffers(1, &ms_directions_);
+    glGenRenderbuffers(1, &ms_darkness_);
+    glGenFramebuffers(1, &resolve_fbo_);
+}
+
+ShaderHatchingPass::~ShaderHatchingPass() {
+    glDeleteVertexArrays(1, &vao_);
+    const GLuint textures[] = {directions_, darkness_};
+    glDeleteTextures(2, textures);
+    const GLuint renderbuffers[] = {ms_directions_, ms_darkness_};
+    glDeleteRenderbuffers(2, renderbuffers);
+    glDeleteFramebuffers(1, &resolve_fbo_);
+}
+
+void ShaderHatchingPass::attach(GLuint surface_framebuffer, int width, int height, int samples) {
+    if (width != width_ || height != height_ || samples != samples_) {
+        nearest_texture(directions_, kDirectionsFormat, GL_RGBA, GL_HALF_FLOAT, width, height);
+        nearest_texture(darkness_, kDarknessFormat, GL_RED, GL_UNSIGNED_BYTE, width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, directions_, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, darkness_, 0);
+        if (samples > 0) {
+            multisampled_storage(ms_directions_, kDirectionsFormat, samples, width, height);
+            multisampled_storage(ms_darkness_, kDarknessFormat, samples, width, height);
+        }
+        width_ = width, height_ = height, samples_ = samples;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, surface_framebuffer);
+    if (samples > 0) {
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, ms_directions_);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_RENDERBUFFER, ms_darkness_);
+    } else {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, directions_, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, darkness_, 0);
+    }
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(3, buffers);
     const GLfloat zero[4] = {0, 0, 0, 0};
-    glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, zero);
-    glDepthMask(GL_TRUE);
-    const GLfloat far_depth = 1.0f;
-    glClearBufferfv(GL_DEPTH, 0, &far_depth);
-    field_.use();
-    field_.set("u_mvp", frame.mvp);
-    field_.set("u_eye", frame.eye);
-    field_.set("u_normal_matrix", frame.normal_matrix);
-    field_.set("u_light", camera_light_direction(s, frame));
-    field_.set("u_viewport", frame.viewport);
-    field_.set("u_feature_size", mesh.feature_size());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    draw_surface_triangles(mesh, frame, back_face_culling_, false);  // the surface pass's visible faces
-    glDisable(GL_DEPTH_TEST);
+    glClearBufferfv(GL_COLOR, 2, zero);
+}
 
-    // 2. The strokes, once a pixel, as line coverage.
+void ShaderHatchingPass::detach(GLuint surface_framebuffer) {
+    if (samples_ > 0) {
+        // Resolve: attachment 1 -> directions_, attachment 2 -> darkness_ (averaged samples).
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, surface_framebuffer);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+        for (GLenum i = 0; i < 2; ++i) {
+            glReadBuffer(GL_COLOR_ATTACHMENT1 + i);
+            glDrawBuffer(GL_COLOR_ATTACHMENT0 + i);
+            glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        }
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, surface_framebuffer);
+    if (samples_ > 0) {
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, 0);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_RENDERBUFFER, 0);
+    } else {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, 0, 0);
+    }
+    const GLenum buffer = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &buffer);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+}
+
+void ShaderHatchingPass::draw(const FrameParams& frame, const RenderSettings& s, GLuint coverage_framebuffer) {
     glBindFramebuffer(GL_FRAMEBUFFER, coverage_framebuffer);
-    glViewport(0, 0, w, h);
+    glViewport(0, 0, int(frame.viewport.x), int(frame.viewport.y));
     strokes_.use();
     // Hatching enum order: none, min (along d2), max (along d1), cross; the shader's: none, d1, d2, both.
     const int family[] = {0, 2, 1, 3};
@@ -98,6 +110,7 @@ void ShaderHatchingPass::draw(const MeshBuffers& mesh, const FrameParams& frame,
     glBindTexture(GL_TEXTURE_2D, darkness_);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, directions_);
+    glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendEquation(GL_MAX);

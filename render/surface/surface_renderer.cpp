@@ -19,15 +19,24 @@ SurfaceRenderer::SurfaceRenderer()
                   "surface/surface_vert.glsl"},
                  "#define KAPPA_HATCHING\n"},
                 {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "hatching/shader_hatching.glsl", "surface/surface_frag.glsl"},
-                 "#define KAPPA_HATCHING\n"}}) {}
+                 "#define KAPPA_HATCHING\n"}}),
+      hatch_targets_({{GL_VERTEX_SHADER,
+                       {"common/mesh_attributes.glsl", "common/colormap.glsl", "hatching/window_directions.glsl",
+                        "surface/surface_vert.glsl"},
+                       "#define KAPPA_HATCHING\n"},
+                      {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "surface/surface_frag.glsl"},
+                       "#define KAPPA_HATCHING\n#define KAPPA_HATCH_TARGETS\n"}}) {}
 
-void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s, bool hatched) {
+void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
+                           SurfaceHatching hatching) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    hatched = hatched && shader_hatching(s);
-    ShaderProgram& p = hatched ? hatched_
+    if (!shader_hatching(s)) hatching = SurfaceHatching::None;
+    const bool hatched = hatching != SurfaceHatching::None;
+    ShaderProgram& p = hatching == SurfaceHatching::Strokes ? hatched_
+                       : hatching == SurfaceHatching::Targets ? hatch_targets_
                        : s.shading == Shading::None && s.colormap == ColorMap::None ? paper_  // depth is all that varies
                        : s.colormap == ColorMap::None                             ? plain_
                                                                                   : program_;

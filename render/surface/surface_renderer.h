@@ -32,15 +32,20 @@ SurfaceTriangles surface_triangles(const MeshBuffers& mesh, const FrameParams& f
 // CPU: render/surface/depth_raster.h.
 void draw_surface_triangles(const MeshBuffers& mesh, const FrameParams& frame, bool cull, bool positions_only);
 
+enum class SurfaceHatching { None, Strokes, Targets };
+
 class SurfaceRenderer {
 public:
     SurfaceRenderer();  // compiles the shaders (GL context current)
     // Draws into the bound framebuffer with depth testing.
     // Back faces are culled where none can be seen (render/surface/back_face_culling.h).
-    // hatched: with --hatch-style shader, the strokes of shaders/hatching/shader_hatching.glsl
-    // drawn into the surface's colour per fragment (software GL: no other pass;
-    // on a GPU render/hatching/shader_hatching.h draws them once a pixel instead).
-    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings, bool hatched = false);
+    // hatching: with --hatch-style shader, Strokes draws the strokes of
+    // shaders/hatching/shader_hatching.glsl into the surface's colour per
+    // fragment (software GL: nothing else to do); Targets writes what they
+    // need into draw buffers 1 and 2 (render/hatching/shader_hatching.h draws
+    // them once a pixel: GPUs).
+    void draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& settings,
+              SurfaceHatching hatching = SurfaceHatching::None);
     void set_back_face_culling(bool on) { back_face_culling_ = on; }  // for tests: off draws every face
 
 private:
@@ -48,6 +53,7 @@ private:
     ShaderProgram plain_;  // without a colour map: reads only positions and normals
     ShaderProgram paper_;  // white paper, no colour map: positions only, nothing to interpolate
     ShaderProgram hatched_;  // any shading and colour map, with the shader hatching's strokes
+    ShaderProgram hatch_targets_;  // the same, with the shader hatching's directions and tone as more targets
     bool back_face_culling_ = true;
 };
 

@@ -1,7 +1,8 @@
 // Shader hatching, full-screen stage: the strokes of shader_hatching.glsl,
-// evaluated once a pixel from the field pass's targets
-// (hatch_vectors_frag.glsl), as line coverage (blended with GL_MAX into the
-// line buffer, where the compositor inks it like every line).
+// evaluated once a pixel from the targets the surface pass filled
+// (surface_frag.glsl with KAPPA_HATCH_TARGETS), as line coverage (blended
+// with GL_MAX into the line buffer, where the compositor inks it like every
+// line).
 uniform sampler2D u_directions;
 uniform sampler2D u_darkness;
 
