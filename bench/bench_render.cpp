@@ -1,5 +1,6 @@
 // Frame time of the line-drawing renderer at 1024x768 (issue 3, "Speed"),
-// frames as the viewer draws them (the compute line path never waits):
+// frames as the viewer draws them (the compute line path never waits); gpu:
+// the GL's own time for the frame's commands (a timer query), beside wall:
 // median of 20 frames, for plain Lambertian shading and for contours +
 // suggestive contours + hatching, on the default model and bunny-1M.ply;
 // and with every line type of --lines on (issue 12: at most 1.5x the
@@ -43,6 +44,7 @@ struct Config {
 
 struct FrameTime {
     double wall_ms, cpu_ms;  // medians; CPU time of the whole process (llvmpipe's threads included)
+    double gpu_ms = 0;       // median of the GL's own time for the frame's commands (GL_TIME_ELAPSED)
 };
 
 // Process CPU time: less disturbed than wall time when other jobs share the machine.
@@ -63,18 +65,27 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
         renderer.render_offscreen(camera, s, w, h);  // as kappa render draws
         glFinish();
     } while (std::chrono::steady_clock::now() - warm_start < std::chrono::milliseconds(300));
-    std::vector<double> wall, cpu;
+    std::vector<double> wall, cpu, gpu;
+    GLuint query = 0;
+    glGenQueries(1, &query);
     for (int i = 0; i < frames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
         const double c0 = cpu_ms();
+        glBeginQuery(GL_TIME_ELAPSED, query);
         renderer.render_offscreen(camera, s, w, h);  // as kappa render draws
+        glEndQuery(GL_TIME_ELAPSED);
         glFinish();
         cpu.push_back(cpu_ms() - c0);
         wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+        gpu.push_back(double(ns) * 1e-6);
     }
+    glDeleteQueries(1, &query);
     std::sort(wall.begin(), wall.end());
     std::sort(cpu.begin(), cpu.end());
-    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+    std::sort(gpu.begin(), gpu.end());
+    return {wall[wall.size() / 2], cpu[cpu.size() / 2], gpu[gpu.size() / 2]};
 }
 
 // The CPU line pass alone: CpuLinePass::prepare, with the GL idle.
@@ -233,9 +244,9 @@ int main(int argc, char** argv) {
                 const FrameTime t = median_frame_ms(renderer, camera, c.settings, target, frames);
                 times.push_back(t);
                 const FrameTime& base = times.front();
-                std::printf("  %-38s %s  wall %8.2f ms (%+4.0f%%)  cpu %8.2f ms (%+4.0f%%)\n", c.name,
+                std::printf("  %-38s %s  wall %8.2f ms (%+4.0f%%)  cpu %8.2f ms (%+4.0f%%)  gpu %8.2f ms\n", c.name,
                             c.settings.msaa ? "msaa 4x" : "no msaa", t.wall_ms, 100.0 * (t.wall_ms / base.wall_ms - 1.0),
-                            t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0));
+                            t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0), t.gpu_ms);
             }
             auto row = [&](const char* name) {
                 size_t i = 0;

@@ -56,12 +56,20 @@ void ShaderHatchingPass::attach(GLuint surface_framebuffer, int width, int heigh
         width_ = width, height_ = height, samples_ = samples;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, surface_framebuffer);
-    if (samples > 0) {
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, ms_directions_);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_RENDERBUFFER, ms_darkness_);
-    } else {
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, directions_, 0);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, darkness_, 0);
+    // The targets stay attached from frame to frame (changing a framebuffer's attachments every
+    // frame makes the driver check it again): attached only when this framebuffer lacks them.
+    const GLuint directions = samples > 0 ? ms_directions_ : directions_;
+    GLint attached = 0;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                                          &attached);
+    if (GLuint(attached) != directions) {
+        if (samples > 0) {
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, ms_directions_);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_RENDERBUFFER, ms_darkness_);
+        } else {
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, directions_, 0);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, darkness_, 0);
+        }
     }
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glDrawBuffers(3, buffers);
@@ -80,16 +88,9 @@ void ShaderHatchingPass::detach(GLuint surface_framebuffer) {
             glDrawBuffer(GL_COLOR_ATTACHMENT0 + i);
             glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         }
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
     }
+    // The framebuffer draws into and reads from attachment 0 alone again; the targets stay attached.
     glBindFramebuffer(GL_FRAMEBUFFER, surface_framebuffer);
-    if (samples_ > 0) {
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_RENDERBUFFER, 0);
-    } else {
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, 0, 0);
-    }
     const GLenum buffer = GL_COLOR_ATTACHMENT0;
     glDrawBuffers(1, &buffer);
     glReadBuffer(GL_COLOR_ATTACHMENT0);

@@ -30,12 +30,13 @@ public:
     ShaderHatchingPass(const ShaderHatchingPass&) = delete;
     ShaderHatchingPass& operator=(const ShaderHatchingPass&) = delete;
 
-    // Before the surface pass (SurfaceHatching::Targets): the targets become
+    // Before the surface pass (SurfaceHatching::Targets): the targets are
     // colour attachments 1 and 2 of `surface_framebuffer` (width x height,
-    // `samples` as its own), cleared, and draw buffers 1 and 2 with its own 0.
+    // `samples` as its own; attached once and kept), cleared, and draw
+    // buffers 1 and 2 beside its own 0.
     void attach(GLuint surface_framebuffer, int width, int height, int samples);
-    // After it: they are taken off (the framebuffer draws into attachment 0
-    // alone again), resolved first when multisampled.
+    // After it: resolved when multisampled, and the framebuffer draws into
+    // attachment 0 alone again.
     void detach(GLuint surface_framebuffer);
     // The strokes into `coverage_framebuffer` (one channel, as the line
     // passes; blended with GL_MAX), left bound.
