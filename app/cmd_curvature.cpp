@@ -8,6 +8,7 @@
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/io/output_file.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/curvature/vertex_flags.h"
 
@@ -128,6 +129,7 @@ int run_curvature(int argc, char** argv) {
         std::printf("  smoothing widths%s: normals %.6g, curvature %.6g, dcurv %.6g\n",
                     fields.smoothing.automatic ? " (auto)" : "", fields.smoothing.normals, fields.smoothing.curvature,
                     fields.smoothing.dcurv);
+        std::printf("  worker threads: %u\n", kappa::thread_count());
         std::printf("  time: load %.3f s, adjacency %.3f s, normals %.3f s, areas %.3f s, curvature %.3f s, "
                     "dcurv %.3f s, smoothing %.3f s, write %.3f s\n",
                     load_s, times.adjacency, times.normals, times.areas, times.curvature, times.dcurv,

@@ -5,8 +5,11 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 using kappa::test::count_lines;
@@ -97,10 +100,34 @@ TEST_CASE("unknown commands and options: one line, exit 2", "[cli][main]") {
     }
 }
 
+// The worker count `kappa curvature` reports ("worker threads: N", the
+// kappa::thread_count() that parallel_for splits its work by); -1 if none.
+int reported_threads(const std::string& output) {
+    const std::string tag = "worker threads: ";
+    const size_t at = output.find(tag);
+    if (at == std::string::npos) return -1;
+    return std::atoi(output.c_str() + at + tag.size());
+}
+
 TEST_CASE("global and per-command --threads", "[cli][main]") {
     CHECK(run_command(kExe + " --threads 1 info --no-curvature").exit_code == 0);
     CHECK(run_command(kExe + " --threads=2 info --no-curvature").exit_code == 0);
     CHECK(run_command(kExe + " info --no-curvature --threads 1").exit_code == 0);
+    // The count takes effect: 1 and 3 workers whichever way it is given, and
+    // by default (or 0) one per hardware thread, as std::thread counts them here.
+    const std::string dir = kappa::test::temp_dir();
+    const std::string curvature = " curvature -o " + dir + "/out.csv";
+    const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
+    const std::vector<std::pair<std::string, int>> runs = {
+        {curvature + " --threads 1", 1},   {curvature + " --threads 3", 3}, {" --threads 1" + curvature, 1},
+        {" --threads=3" + curvature, 3},   {curvature, hardware},           {curvature + " --threads 0", hardware},
+    };
+    for (const auto& [args, expected] : runs) {
+        const auto r = run_command(kExe + args);
+        INFO(args << ": " << r.output);
+        REQUIRE(r.exit_code == 0);
+        CHECK(reported_threads(r.output) == expected);
+    }
     for (const char* bad : {" --threads x info", " --threads -1 info", " info --threads", " --threads"}) {
         INFO(bad);
         const auto r = run_command(kExe + bad);
