@@ -9,7 +9,12 @@
 
 #include <filesystem>
 #include <set>
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <string>
+#include <utility>
+#include <vector>
 
 using kappa::test::read_file;
 using kappa::test::run_command;
@@ -160,4 +165,165 @@ TEST_CASE("kappa batch refuses a malformed or missing manifest in one line", "[c
     CHECK(r.exit_code == 1);
     CHECK(r.output == "kappa: " + dir + "/none.txt: cannot open the manifest\n");
     CHECK(!fs::exists(dir + "/out"));
+}
+
+TEST_CASE("kappa batch: an output it cannot write fails that job alone, in one line, and leaves nothing behind",
+          "[cli][batch]") {
+    const std::string dir = temp_dir();
+    write_file(dir + "/blocker", "a file where the job wants a folder\n");
+    write_file(dir + "/jobs.txt",
+               "-  out/a.png          --size 128x96\n"
+               "-  blocker/b.png      --size 128x96\n"
+               "-  blocker/c.csv\n"
+               "-  out/d.png          --size 128x96 --view 90,20\n");
+    const auto r = run_command(kExe + " batch -q " + dir + "/jobs.txt --failures " + dir + "/failed.txt 2>&1");
+    INFO(r.output);
+    CHECK(r.exit_code == 1);
+    CHECK(r.output.find("4 jobs: 2 written, 0 skipped (output exists), 2 failed") != std::string::npos);
+    CHECK(files_under(dir + "/out") == std::set<std::string>{"a.png", "d.png"});
+    for (const char* name : {"b.png", "c.csv"}) {
+        const std::string output = dir + "/blocker/" + name;
+        INFO(name);
+        // line N: OUTPUT: OUTPUT: cannot create its folder: (the system's reason)
+        const size_t at = r.output.find(": " + output + ": cannot create its folder");
+        CHECK(at != std::string::npos);
+        CHECK(r.output.rfind("  line ", at) != std::string::npos);
+    }
+    CHECK(read_file(dir + "/blocker") == "a file where the job wants a folder\n");
+    CHECK(kappa::test::count_lines(read_file(dir + "/failed.txt")) == 2);
+    // No partial file anywhere.
+    for (const auto& name : files_under(dir)) CHECK(name.find(".partial-") == std::string::npos);
+}
+
+TEST_CASE("kappa batch: a relative --xf in a manifest is read from the manifest's folder", "[cli][batch][xf]") {
+    const std::string dir = temp_dir(), elsewhere = temp_dir();
+    fs::create_directories(dir + "/views");
+    // A torus about the origin (radius 1.4), seen along its axis from 4 units (a.xf) and from the side
+    // (b.xf): rtsc .xf files hold the view matrix row by row.
+    write_off(dir + "/torus.off", kappa::make_torus(1.0f, 0.4f, 32, 16));
+    write_file(dir + "/views/a.xf", "1 0 0 0\n0 1 0 0\n0 0 1 -4\n0 0 0 1\n");
+    write_file(dir + "/views/b.xf", "0 0 -1 0\n0.5 0.866025 0 0\n0.866025 -0.5 0 -4\n0 0 0 1\n");
+    write_file(dir + "/jobs.txt",
+               "torus.off  out/a.png --size 128x96 --shading none --xf views/a.xf\n"
+               "torus.off  out/b.png --size 128x96 --shading none --xf=views/b.xf\n"
+               "torus.off  out/default.png --size 128x96 --shading none\n");
+    // Run from another folder: the paths must not be taken from the working directory.
+    const auto r = run_command("cd " + elsewhere + " && " + kExe + " batch -q " + dir + "/jobs.txt 2>&1");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("3 jobs: 3 written") != std::string::npos);
+    CHECK(files_under(elsewhere).empty());
+    for (const std::string view : {"a", "b"}) {
+        INFO(view);
+        REQUIRE(run_command(kExe + " render -q " + dir + "/torus.off --size 128x96 --shading none --xf " + dir +
+                            "/views/" + view + ".xf -o " + dir + "/single-" + view + ".png")
+                    .exit_code == 0);
+        CHECK(read_file(dir + "/out/" + view + ".png") == read_file(dir + "/single-" + view + ".png"));
+        // The viewpoint was used: not the default drawing.
+        CHECK(read_file(dir + "/out/" + view + ".png") != read_file(dir + "/out/default.png"));
+    }
+    CHECK(read_file(dir + "/out/a.png") != read_file(dir + "/out/b.png"));
+}
+
+TEST_CASE("kappa batch computes the fields again when consecutive jobs differ in crease angle, detail or curvature "
+          "options",
+          "[cli][batch][cache]") {
+    // A torus beside a box: sharp edges for --crease-angle, curvature for the rest.
+    const std::string dir = temp_dir();
+    kappa::Mesh shape = kappa::make_torus(1.0f, 0.4f, 48, 24);
+    kappa::test::append(shape, kappa::test::box({1.6f, -0.5f, -0.5f}, {2.4f, 0.5f, 0.5f}));
+    write_off(dir + "/shape.off", shape);
+    // One mesh, each job differing from the one before it in one option of the preparation.
+    const std::string view = " --size 128x96 --view 20,30 --shading lambert";
+    const std::vector<std::pair<std::string, std::string>> jobs = {
+        {"crease.png", view + " --crease-angle 30"},
+        {"no-crease.png", view + " --crease-angle off"},
+        {"detail-off.png", view + " --crease-angle off --detail off"},
+        {"smoothed.png", view + " --crease-angle off --detail off --smooth-curvature 0.1"},
+        {"jet.png", view + " --crease-angle off --detail off --smooth-curvature 0.1 --estimator jet"},
+        {"raw.csv", ""},
+        {"smoothed.csv", " --smooth-curvature 0.1"},
+        {"jet.csv", " --smooth-curvature 0.1 --estimator jet"},
+        {"auto.csv", " --smooth auto --estimator jet"},
+    };
+    std::string manifest;
+    for (const auto& [output, options] : jobs) manifest += "shape.off out/" + output + options + "\n";
+    write_file(dir + "/jobs.txt", manifest);
+    const auto r = run_command(kExe + " batch -q " + dir + "/jobs.txt 2>&1");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    std::string previous;
+    for (const auto& [output, options] : jobs) {
+        const bool render = output.find(".png") != std::string::npos;
+        const std::string single = dir + "/single-" + output;
+        REQUIRE(run_command(kExe + (render ? " render" : " curvature") + " -q " + dir + "/shape.off -o " + single +
+                            options)
+                    .exit_code == 0);
+        const std::string bytes = read_file(dir + "/out/" + output);
+        INFO(output << options);
+        CHECK(!bytes.empty());
+        CHECK(bytes == read_file(single));  // not the previous job's fields
+        if (output != "raw.csv") CHECK(bytes != previous);  // the option changes the result
+        previous = bytes;
+    }
+}
+
+namespace {
+
+// Whether a file is a whole PNG: it ends with the IEND chunk (a write cut short does not).
+bool complete_png(const std::string& path) {
+    const std::string bytes = read_file(path);
+    static const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+    return bytes.size() > 8 + iend.size() && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0 &&
+           bytes.compare(bytes.size() - iend.size(), iend.size(), iend) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("kappa batch killed while writing leaves no output a rerun would skip, and the rerun finishes the rest",
+          "[cli][batch][interrupted]") {
+    // A small job, a large image (its PNG takes tens of milliseconds to write), a small job.
+    const std::string dir = temp_dir();
+    write_file(dir + "/jobs.txt",
+               "-  out/first.png --size 128x96 --shading none\n"
+               "-  out/large.png --size 2400x1800 --shading none --lines contours\n"
+               "-  out/last.png  --size 128x96 --shading none --view 90,20\n");
+    const std::string command = kExe + " batch -q " + dir + "/jobs.txt";
+    const pid_t pid = fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+        execl("/bin/sh", "sh", "-c", ("exec " + command + " >/dev/null 2>&1").c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Kill it (SIGKILL: no chance to tidy up) the moment any file of the large job appears.
+    bool seen = false;
+    for (int i = 0; i < 200000 && !seen; ++i) {
+        for (const auto& name : files_under(dir + "/out")) seen |= name.rfind("large", 0) == 0;
+        if (!seen) usleep(100);
+    }
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    REQUIRE(seen);
+    REQUIRE(WIFSIGNALED(status));  // killed, not finished
+    // What the interrupted run left under the outputs' own names is whole.
+    size_t whole = 0;
+    for (const char* name : {"first.png", "large.png", "last.png"}) {
+        const std::string path = dir + "/out/" + name;
+        if (!fs::exists(path)) continue;
+        INFO(name << " after the kill");
+        CHECK(complete_png(path));
+        ++whole;
+    }
+    CHECK(complete_png(dir + "/out/first.png"));
+    // The rerun skips exactly those and writes the others, whole.
+    const auto r = run_command(command + " 2>&1");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.find("3 jobs: " + std::to_string(3 - whole) + " written, " + std::to_string(whole) + " skipped") !=
+          std::string::npos);
+    for (const char* name : {"first.png", "large.png", "last.png"}) {
+        INFO(name << " after the rerun");
+        CHECK(complete_png(dir + "/out/" + name));
+    }
 }
