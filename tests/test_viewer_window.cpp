@@ -1,9 +1,8 @@
 // `kappa view` in a real window under Xvfb (xvfb-run -a), driven by a
 // --script: the panel is drawn, the model is in the drawing area, an orbit
 // changes the image, toggling contours off removes the line pixels, and a
-// saved .xf view renders the same with `kappa render --xf`, every line kind
-// has a key that draws it. Also the
-// one-line error without a display.
+// saved .xf view renders the same with `kappa render --xf`. Also the
+// one-line error without a display. The keys: test_viewer_keys.cpp.
 #include <catch2/catch.hpp>
 
 #include "test_support.h"
@@ -216,46 +215,4 @@ TEST_CASE("a mesh that cannot be read ends a scripted run with one line naming i
     CHECK(r.exit_code == 1);
     CHECK(r.output.find("kappa view: " + dir + "/broken.ply") != std::string::npos);
     CHECK(test::count_lines(r.output) == 1);
-}
-
-TEST_CASE("every line kind is toggled by its key, and kappa view --help lists the kinds and keys",
-          "[viewer][window][keys]") {
-    // key, line kind: pressing the key on a white surface without lines draws that kind
-    // (the keys of app/viewer/shortcuts.cpp).
-    const std::vector<std::pair<std::string, std::string>> keys = {
-        {"E", "silhouette"},           {"Ctrl+F", "suggestive-highlights"}, {"W", "dwkr"},
-        {"Ctrl+R", "ridges"},          {"Ctrl+V", "valleys"},               {"Ctrl+A", "apparent-ridges"},
-        {"Ctrl+P", "principal-highlights"}, {"Ctrl+K", "parabolic"},        {"Ctrl+H", "mean-zero"},
-        {"I", "isophotes"},            {"T", "topo"},
-    };
-    const std::string dir = test::temp_dir();
-    // The built-in model's valleys are shallow: a low ridge threshold.
-    std::string steps = "panel off\nset shading none\nset lines none\nset rv-threshold 0.2\nframes 2\n"
-                        "screenshot " + dir + "/none.png\n";
-    for (const auto& [key, kind] : keys)
-        steps += "key " + key + "\nframes 1\nscreenshot " + dir + "/" + kind + ".png\nkey " + key + "\n";
-    steps += "frames 1\nscreenshot " + dir + "/none-again.png\n";
-    test::write_file(dir + "/keys.txt", steps);
-    const auto r = run_viewer("--size 400x300 --script " + dir + "/keys.txt");
-    INFO(r.output);
-    REQUIRE(r.exit_code == 0);
-    const render::Image none = render::read_png(dir + "/none.png");
-    const size_t base = count(none, 0, 0, none.width, none.height, is_dark);
-    CHECK(base < 20);
-    for (const auto& [key, kind] : keys) {
-        const render::Image im = render::read_png(dir + "/" + kind + ".png");
-        const size_t ink = count(im, 0, 0, im.width, im.height, is_dark);
-        INFO(key << " (" << kind << "): " << ink << " dark pixels, " << base << " without lines");
-        CHECK(ink > base + 100);
-    }
-    // Each key again turned its kind off.
-    const render::Image again = render::read_png(dir + "/none-again.png");
-    CHECK(count(again, 0, 0, again.width, again.height, is_dark) == base);
-
-    const auto help = test::run_command(std::string(KAPPA_EXE) + " view --help");
-    for (const auto& [key, kind] : keys) {
-        INFO(kind << ", " << key);
-        CHECK(help.output.find(kind) != std::string::npos);
-        CHECK(help.output.find("  " + key + " ") != std::string::npos);
-    }
 }
