@@ -613,6 +613,38 @@ TEST_CASE("A turntable's frame i is the view at azimuth + 360 i / N, about the m
     }
 }
 
+TEST_CASE("A turntable with --light-frame model keeps the light on the model as it turns", "[render][cli][turntable]") {
+    // With the light fixed to the model, frame i of --turntable 4 --view 30,20
+    // is the single view at azimuth 30 + 90 i lit from the same model
+    // direction; lit from the camera instead (the default), the shading of
+    // that view differs.
+    const std::string dir = test::temp_dir(), bunny = test::shared_mesh("bunny.ply");
+    const std::string common = " -q --size 160x120 --lines none --msaa off --shading lambert";
+    REQUIRE(test::run_command(kappa_render(bunny + common + " --light-frame model --view 30,20 --turntable 4 -o " + dir +
+                                           "/t.png"))
+                .exit_code == 0);
+    auto mean_difference = [](const render::Image& a, const render::Image& b) {
+        double sum = 0;
+        for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+        return sum / double(a.pixels.size());
+    };
+    for (int i = 1; i < 4; ++i) {
+        const std::string az = std::to_string(30 + 90 * i);
+        REQUIRE(test::run_command(kappa_render(bunny + common + " --light-frame model --view " + az + ",20 -o " + dir +
+                                               "/model.png"))
+                    .exit_code == 0);
+        REQUIRE(test::run_command(kappa_render(bunny + common + " --view " + az + ",20 -o " + dir + "/camera.png"))
+                    .exit_code == 0);
+        const render::Image frame = render::read_png(dir + "/t-00" + std::to_string(i) + ".png");
+        const double same = mean_difference(frame, render::read_png(dir + "/model.png"));
+        const double camera_lit = mean_difference(frame, render::read_png(dir + "/camera.png"));
+        INFO("frame " << i << ": mean difference from the model-lit view " << same << ", from the camera-lit one "
+                      << camera_lit);
+        CHECK(same < 0.5);
+        CHECK(camera_lit > 2.0);
+    }
+}
+
 TEST_CASE("A turntable with --up or --xf turns about the camera's up axis, through the target or the model's centre",
           "[render][cli][turntable]") {
     // Camera at E looking at T with up U (perpendicular to E - T): a quarter
