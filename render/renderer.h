@@ -4,7 +4,8 @@
 //
 // Per frame: surface pass (optionally 4x MSAA) -> resolve into colour and
 // depth textures -> line passes into a coverage texture (depth-tested
-// against the surface depth) -> composite into the target -> colour bar.
+// against the surface depth), hatching strokes with them -> composite into
+// the target -> colour bar.
 #pragma once
 
 #include "render/camera/camera.h"

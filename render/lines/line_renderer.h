@@ -1,6 +1,10 @@
 // Line passes: every line type of --lines, as screen-space quads (see
-// shaders/lines/line_quad.glsl for why), accumulated as anti-aliased coverage with
-// GL_MAX blending into the bound one-channel framebuffer. Occlusion is tested against the surface depth texture.
+// shaders/lines/line_quad.glsl for why), accumulated as anti-aliased coverage
+// with GL_MAX blending into the bound one-channel framebuffer. Occlusion is
+// tested against the surface depth texture. The per-triangle families are
+// cut where --line-extraction says (render_settings.h): in compute passes
+// (render/lines/segment_buffer.h), geometry shaders (the same extraction
+// functions, shaders/lines/*.glsl), or on the CPU (render/lines/cpu_lines.h).
 #pragma once
 
 #include "render/lines/cpu_lines.h"
