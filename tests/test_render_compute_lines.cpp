@@ -20,6 +20,8 @@
 
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/mesh/creases.h"
+#include "render/fields/field_upload.h"
 #include "geometry/surface_analysis.h"
 #include "render/image/ink_agreement.h"
 #include "render/lines/segment_buffer.h"
@@ -40,8 +42,10 @@ size_t differing_pixels(const render::Image& a, const render::Image& b) {
     return n;
 }
 
-// Every line family the compute path extracts, one selection each.
-std::vector<render::LineSelection> line_families() {
+// Every line family the compute path extracts, one selection each: the
+// per-triangle ones, and the per-edge ones the mesh has (fandisk's creases,
+// bunny's boundaries, with contours: ink on both paths).
+std::vector<render::LineSelection> line_families(const std::string& mesh) {
     render::LineSelection contours_suggestive{true, true, false, false};
     render::LineSelection silhouette{false, false, false, false};
     silhouette.silhouette = true;
@@ -55,18 +59,25 @@ std::vector<render::LineSelection> line_families() {
     view_ridges.apparent_ridges = view_ridges.principal_highlights = true;
     render::LineSelection levels{false, false, false, false};
     levels.isophotes = levels.topo = true;
-    return {contours_suggestive, silhouette, highlights, ridges, parabolic, view_ridges, levels};
+    render::LineSelection edges{false, false, false, false};
+    if (mesh == "fandisk.obj") edges.creases = true;
+    else edges.contours = edges.boundaries = true;
+    return {contours_suggestive, silhouette, highlights, ridges, parabolic, view_ridges, levels, edges};
 }
 
 struct ShapeUnderTest {
-    Mesh mesh;
+    Mesh mesh;  // split at its creases (--crease-angle auto), as kappa render draws it
     SurfaceFields fields;
     float fs;
     render::Camera camera;
+    std::vector<glm::vec3> crease_points;  // render/fields/field_upload.h
 };
 
 ShapeUnderTest shared_shape(const std::string& name) {
-    ShapeUnderTest t{load_mesh(test::shared_mesh(name)), {}, 0, {}};
+    const Mesh input = load_mesh(test::shared_mesh(name));
+    SplitMesh split = split_at_creases(input, find_creases(input, auto_crease_angle(input)));
+    std::vector<glm::vec3> crease_points = render::crease_end_points(split);
+    ShapeUnderTest t{std::move(split.mesh), {}, 0, {}, std::move(crease_points)};
     t.fields = compute_surface_fields(t.mesh);
     t.fs = feature_size(t.mesh, t.fields);
     t.camera = render::Camera::default_view(t.mesh, render::bounding_sphere(t.mesh), 30.0f, 4.0f / 3.0f);
@@ -75,7 +86,10 @@ ShapeUnderTest shared_shape(const std::string& name) {
 
 render::Image draw(const ShapeUnderTest& t, render::RenderSettings s, render::LineExtraction path) {
     s.line_extraction = path;
-    return test::render(t.mesh, t.fields, t.fs, t.camera, s, 640, 480);
+    render::Renderer& r = test::renderer();
+    r.set_mesh(t.mesh, t.fields, t.fs);
+    r.set_creases(t.crease_points);
+    return render::render_to_image(r, t.camera, s, 640, 480);
 }
 
 }  // namespace
@@ -96,7 +110,7 @@ TEST_CASE("the headless context offers the compute line path, and auto keeps the
 TEST_CASE("compute-shader and geometry-shader extraction draw the same pixels", "[render][compute-lines]") {
     for (const std::string name : {"bunny.ply", "fandisk.obj"}) {
         const ShapeUnderTest t = shared_shape(name);
-        for (const render::LineSelection& lines : line_families()) {
+        for (const render::LineSelection& lines : line_families(name)) {
             for (const bool hidden : {false, true}) {
                 INFO(name << ", lines " << render::to_string(lines) << (hidden ? ", hidden lines" : ""));
                 render::RenderSettings s = test::lines_only(lines);
@@ -117,7 +131,7 @@ TEST_CASE("compute-shader and geometry-shader extraction draw the same pixels", 
 TEST_CASE("compute-shader and CPU extraction draw the same image within the merge bound", "[render][compute-lines]") {
     for (const std::string name : {"bunny.ply", "fandisk.obj"}) {
         const ShapeUnderTest t = shared_shape(name);
-        for (const render::LineSelection& lines : line_families()) {
+        for (const render::LineSelection& lines : line_families(name)) {
             INFO(name << ", lines " << render::to_string(lines));
             const render::RenderSettings s = test::lines_only(lines);
             const render::Image cs = draw(t, s, render::LineExtraction::Compute);

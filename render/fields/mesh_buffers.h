@@ -68,6 +68,10 @@ public:
     // vertex indices a face, cluster order), for the compute line passes.
     GLuint vertex_buffer() const { return vertex_buffer_; }
     GLuint triangle_buffer() const { return triangle_buffer_; }
+    // The open boundary edges (vertex index pairs) and the creases (per end
+    // point: position, the two faces' normals), for the compute line passes.
+    GLuint boundary_edge_buffer() const { return edge_buffer_; }
+    GLuint crease_buffer() const { return crease_buffer_; }
     size_t vertex_count() const { return vertex_count_; }
     size_t face_count() const { return face_count_; }
     size_t boundary_edge_count() const { return boundary_edges_; }

@@ -64,7 +64,8 @@ LineRenderer::LineRenderer()
       isolines_highlights_(triangle_program(kLineVertex, "lines/lines_vert.glsl", "lines/isolines.glsl",
                                             "lines/isolines_geom.glsl", "#define KAPPA_HIGHLIGHTS\n")),
       boundaries_(line_program({"lines/segment_emit.glsl", "lines/line_quad.glsl", "common/mesh_attribute_values.glsl",
-                                "common/view_dependent.glsl", "lines/line_vertex.glsl", "lines/boundary_geom.glsl"})),
+                                "common/view_dependent.glsl", "lines/line_vertex.glsl", "lines/edge_inputs.glsl",
+                                "lines/boundary_lines.glsl", "lines/boundary_geom.glsl"})),
       curvature_lines_(triangle_program(kCurvatureVertex, "lines/curvature_lines_vert.glsl", "lines/curvature_lines.glsl",
                                         "lines/curvature_lines_geom.glsl")),
       view_ridges_(triangle_program(kViewRidgeVertex, "lines/view_ridges_vert.glsl", "lines/view_ridges.glsl",
@@ -75,7 +76,9 @@ LineRenderer::LineRenderer()
                 {GL_GEOMETRY_SHADER, {"lines/segment_emit.glsl", "lines/line_quad.glsl", "lines/vectors_geom.glsl"}},
                 {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}}),
       creases_({{GL_VERTEX_SHADER, {"lines/crease_vert.glsl"}},
-                {GL_GEOMETRY_SHADER, {"lines/segment_emit.glsl", "lines/line_quad.glsl", "lines/crease_geom.glsl"}},
+                {GL_GEOMETRY_SHADER,
+                 {"lines/segment_emit.glsl", "lines/line_quad.glsl", "lines/edge_inputs.glsl", "lines/crease_lines.glsl",
+                  "lines/crease_geom.glsl"}},
                 {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}}) {
     if (SegmentBuffer::supported()) compute_ = std::make_unique<ComputeFamilies>();
 }
@@ -90,6 +93,17 @@ struct LineRenderer::ComputeFamilies {
         compute_program(kViewRidgeVertex, "lines/view_ridges.glsl", "view_ridge_vertex", "extract_view_ridges");
     ShaderProgram level_lines =
         compute_program(kLevelVertex, "lines/level_lines.glsl", "level_vertex", "extract_level_lines");
+    // The per-edge families (shaders/lines/edges_comp.glsl).
+    ShaderProgram boundaries = ShaderProgram({{GL_COMPUTE_SHADER,
+                                               {"common/mesh_attribute_values.glsl", "common/mesh_vertex_fetch.glsl",
+                                                "lines/segment_emit.glsl", "lines/segment_append.glsl",
+                                                "lines/edge_inputs.glsl", "lines/boundary_lines.glsl",
+                                                "lines/edges_comp.glsl"},
+                                               "#define KAPPA_BOUNDARIES\n"}});
+    ShaderProgram creases = ShaderProgram({{GL_COMPUTE_SHADER,
+                                            {"lines/segment_emit.glsl", "lines/segment_append.glsl",
+                                             "lines/edge_inputs.glsl", "lines/crease_lines.glsl",
+                                             "lines/edges_comp.glsl"}}});
     SegmentBuffer segments;
 };
 
@@ -150,6 +164,8 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     // one pass over the triangles.
     const bool contours = s.lines.any_contours(), silhouette_only = s.lines.silhouette && !s.lines.contours;
     const bool highlights = s.lines.suggestive_highlights;
+    const bool creases = (s.lines.creases || contours) && mesh.crease_count() > 0;
+    const bool boundaries = s.lines.boundaries && mesh.boundary_edge_count() > 0 && !cpu_lines;
     // With the compute path the families run until the segment buffer held
     // them all (a frame that asked for more grows it; an image for a file
     // is then drawn again, a viewer's frame is not waited for).
@@ -238,6 +254,20 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
                        },
                        [&] { return topo_runs(mesh.clusters(), frame, s.hidden_lines, margin, levels); });
         }
+        // Creases and boundaries, one invocation an edge.
+        if (compute && creases) {
+            ShaderProgram& p = compute_->creases;
+            set_common(p, mesh, frame, s);
+            p.set("u_creases", int(s.lines.creases));
+            p.set("u_contours", int(contours));
+            p.set("u_silhouette_only", int(silhouette_only));
+            compute_->segments.dispatch_items(p, uint32_t(mesh.crease_count()), 0, mesh.crease_buffer());
+        }
+        if (compute && boundaries) {
+            set_common(compute_->boundaries, mesh, frame, s);
+            compute_->segments.dispatch_items(compute_->boundaries, uint32_t(mesh.boundary_edge_count()),
+                                              mesh.vertex_buffer(), mesh.boundary_edge_buffer());
+        }
         if (!compute || compute_->segments.finish(complete_frames_)) break;
     }
     if (compute) compute_->segments.draw(frame, s.hidden_lines);
@@ -246,9 +276,9 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         const CpuLines lines = pending_cpu_lines_.valid() ? pending_cpu_lines_.get() : cpu_lines_.prepare(mesh, frame, s);
         ink = cpu_lines_.draw(lines, strokes, frame, s, surface_depth_texture, coverage_texture, cpu_depth);
     }
+    if (creases || boundaries) ink.anywhere = true;  // after the CPU lines' own ink area
     // The GL passes below test against the depth texture: a depth drawn on the CPU goes there first.
     const bool glyphs = s.vectors != 0 && mesh.vertex_count() > 0;
-    const bool creases = (s.lines.creases || contours) && mesh.crease_count() > 0;
     if (cpu_depth && cpu_depth->size() == size_t(frame.viewport.x) * size_t(frame.viewport.y) && (glyphs || creases)) {
         glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -265,16 +295,14 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         vectors_.set("u_stride", int(std::max<size_t>(1, mesh.vertex_count() / wanted)));
         mesh.draw_points();
     }
-    if (creases) {
-        ink.anywhere = true;
+    if (creases && !compute) {
         set_common(creases_, mesh, frame, s);
         creases_.set("u_creases", int(s.lines.creases));
         creases_.set("u_contours", int(contours));
         creases_.set("u_silhouette_only", int(silhouette_only));
         mesh.draw_creases();
     }
-    if (s.lines.boundaries && mesh.boundary_edge_count() > 0 && !cpu_lines) {
-        ink.anywhere = true;
+    if (boundaries && !compute) {
         set_common(boundaries_, mesh, frame, s);
         mesh.draw_boundary_edges();
     }

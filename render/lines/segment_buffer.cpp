@@ -29,6 +29,14 @@ void set_segment_attributes() {
     }
 }
 
+// Enough groups of kGroupSize invocations for `invocations`, in rows of at most kMaxGroupsX
+// (the shaders number them row by row).
+void dispatch_groups(uint32_t invocations) {
+    const uint32_t groups = (invocations + kGroupSize - 1) / kGroupSize;
+    const uint32_t x = std::min(groups, kMaxGroupsX), y = (groups + x - 1) / x;
+    glDispatchCompute(x, y, 1);
+}
+
 // How many segments a frame asked for (segment_count_comp.glsl), at `offset` in `buffer`.
 GLuint read_requested(GLuint buffer, GLintptr offset) {
     GLuint requested = 0;
@@ -122,9 +130,18 @@ void SegmentBuffer::dispatch(ShaderProgram& p, const std::vector<FaceRun>& runs,
     p.set("u_run_count", int(table.size() / 2));
     p.set("u_face_total", int(total));
     p.set("u_segment_capacity", int(capacity_));
-    const uint32_t groups = (total + kGroupSize - 1) / kGroupSize;
-    const uint32_t x = std::min(groups, kMaxGroupsX), y = (groups + x - 1) / x;
-    glDispatchCompute(x, y, 1);
+    dispatch_groups(total);
+}
+
+void SegmentBuffer::dispatch_items(ShaderProgram& p, uint32_t count, GLuint vertex_buffer, GLuint item_buffer) {
+    if (count == 0) return;
+    if (vertex_buffer) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertex_buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, item_buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, segments_buffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, draw_buffer_);
+    p.set("u_item_count", int(count));
+    p.set("u_segment_capacity", int(capacity_));
+    dispatch_groups(count);
 }
 
 bool SegmentBuffer::finish(bool wait) {

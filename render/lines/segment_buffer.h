@@ -40,6 +40,10 @@ public:
     // Runs the compute program `p` (in use, its uniforms set) over the faces of
     // `runs`; vertex_buffer, triangle_buffer: the mesh's (render/fields/mesh_buffers.h).
     void dispatch(ShaderProgram& p, const std::vector<FaceRun>& runs, GLuint vertex_buffer, GLuint triangle_buffer);
+    // Runs the compute program `p` once for each of `count` items (edges:
+    // shaders/lines/edges_comp.glsl), item_buffer bound as storage 1 and
+    // vertex_buffer (or 0) as storage 0.
+    void dispatch_items(ShaderProgram& p, uint32_t count, GLuint vertex_buffer, GLuint item_buffer);
     // Clamps the draw to the capacity. Returns false when the frame made more
     // segments than the buffer holds; with wait = false that is only known
     // from an earlier frame (no stall), and the buffer grows for the next one.
