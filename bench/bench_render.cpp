@@ -45,6 +45,7 @@ struct Config {
 struct FrameTime {
     double wall_ms, cpu_ms;  // medians; CPU time of the whole process (llvmpipe's threads included)
     double gpu_ms = 0;       // median of the GL's own time for the frame's commands (GL_TIME_ELAPSED)
+    double extract_ms = 0, draw_ms = 0;  // medians of the line passes' GPU times (LineRenderer::gpu_times)
 };
 
 // Process CPU time: less disturbed than wall time when other jobs share the machine.
@@ -65,7 +66,7 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
         renderer.render_offscreen(camera, s, w, h);  // as kappa render draws
         glFinish();
     } while (std::chrono::steady_clock::now() - warm_start < std::chrono::milliseconds(300));
-    std::vector<double> wall, cpu, gpu;
+    std::vector<double> wall, cpu, gpu, extract, draw;
     GLuint query = 0;
     glGenQueries(1, &query);
     for (int i = 0; i < frames; ++i) {
@@ -80,12 +81,15 @@ FrameTime median_frame_ms(render::Renderer& renderer, const render::Camera& came
         GLuint64 ns = 0;
         glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
         gpu.push_back(double(ns) * 1e-6);
+        extract.push_back(renderer.line_gpu_times().extract_ms);
+        draw.push_back(renderer.line_gpu_times().draw_ms);
     }
     glDeleteQueries(1, &query);
     std::sort(wall.begin(), wall.end());
     std::sort(cpu.begin(), cpu.end());
-    std::sort(gpu.begin(), gpu.end());
-    return {wall[wall.size() / 2], cpu[cpu.size() / 2], gpu[gpu.size() / 2]};
+    for (auto* v : {&gpu, &extract, &draw}) std::sort(v->begin(), v->end());
+    return {wall[wall.size() / 2], cpu[cpu.size() / 2], gpu[gpu.size() / 2], extract[extract.size() / 2],
+            draw[draw.size() / 2]};
 }
 
 // The CPU line pass alone: CpuLinePass::prepare, with the GL idle.
@@ -211,6 +215,7 @@ int main(int argc, char** argv) {
     render::Renderer renderer;
     // Frames as the viewer draws them: the compute path never waits for its segment count.
     renderer.set_complete_frames(false);
+    renderer.set_line_gpu_timing(true);  // the line passes' GPU times beside each frame's
     const char* path_names[] = {"auto", "compute", "geometry shaders", "CPU"};
     std::printf("lines of auto: %s\n", path_names[int(renderer.line_path(lines))]);
     render::Framebuffer target({width, height, 0, GL_RGBA8, false});
@@ -244,9 +249,11 @@ int main(int argc, char** argv) {
                 const FrameTime t = median_frame_ms(renderer, camera, c.settings, target, frames);
                 times.push_back(t);
                 const FrameTime& base = times.front();
-                std::printf("  %-38s %s  wall %8.2f ms (%+4.0f%%)  cpu %8.2f ms (%+4.0f%%)  gpu %8.2f ms\n", c.name,
-                            c.settings.msaa ? "msaa 4x" : "no msaa", t.wall_ms, 100.0 * (t.wall_ms / base.wall_ms - 1.0),
-                            t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0), t.gpu_ms);
+                std::printf("  %-38s %s  wall %8.2f ms (%+4.0f%%)  cpu %8.2f ms (%+4.0f%%)  gpu %8.2f ms"
+                            "  (lines: cut %.2f, drawn %.2f)\n",
+                            c.name, c.settings.msaa ? "msaa 4x" : "no msaa", t.wall_ms,
+                            100.0 * (t.wall_ms / base.wall_ms - 1.0), t.cpu_ms, 100.0 * (t.cpu_ms / base.cpu_ms - 1.0),
+                            t.gpu_ms, t.extract_ms, t.draw_ms);
             }
             auto row = [&](const char* name) {
                 size_t i = 0;

@@ -151,7 +151,7 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
                                cpu_line_raster_ ? lines_fb_.color_texture() : 0, cpu_raster ? strokes : none,
                                cpu_depth_);
     else
-        ink_ = InkArea();
+        ink_ = InkArea(), line_pass_.clear_gpu_times();
     if (!cpu_raster && !strokes.empty()) {
         stroke_pass_.draw(strokes, frame, surface_fb_.depth_texture());
         ink_.anywhere = true;

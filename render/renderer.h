@@ -102,6 +102,9 @@ public:
     // The compute path's segment buffer (render/lines/segment_buffer.h; null
     // without GL 4.3). For tests and benchmarks.
     SegmentBuffer* segment_buffer() { return line_pass_.segment_buffer(); }
+    // GPU times of the last frame's line passes (LineRenderer::gpu_times), for benchmarks.
+    void set_line_gpu_timing(bool on) { line_pass_.set_gpu_timing(on); }
+    LineRenderer::GpuTimes line_gpu_times() const { return line_pass_.gpu_times(); }
 
 private:
     void ensure_buffers(int width, int height, bool msaa);

@@ -107,7 +107,9 @@ struct LineRenderer::ComputeFamilies {
     SegmentBuffer segments;
 };
 
-LineRenderer::~LineRenderer() = default;
+LineRenderer::~LineRenderer() {
+    if (timestamps_[0]) glDeleteQueries(3, timestamps_);
+}
 
 SegmentBuffer* LineRenderer::segment_buffer() { return compute_ ? &compute_->segments : nullptr; }
 
@@ -132,6 +134,10 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
                            LineExtraction path, GLuint surface_depth_texture, GLuint coverage_texture,
                            const std::vector<WindowSegment>& strokes, const std::vector<float>* cpu_depth) {
     InkArea ink;
+    if (gpu_timing_) {
+        if (!timestamps_[0]) glGenQueries(3, timestamps_);
+        glQueryCounter(timestamps_[0], GL_TIMESTAMP);
+    }
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
@@ -270,7 +276,14 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         }
         if (!compute || compute_->segments.finish(complete_frames_)) break;
     }
+    if (gpu_timing_) glQueryCounter(timestamps_[1], GL_TIMESTAMP);
     if (compute) compute_->segments.draw(frame, s.hidden_lines);
+    if (gpu_timing_) {
+        glQueryCounter(timestamps_[2], GL_TIMESTAMP);
+        GLuint64 t[3] = {0, 0, 0};
+        for (int i = 0; i < 3; ++i) glGetQueryObjectui64v(timestamps_[i], GL_QUERY_RESULT, &t[i]);
+        gpu_times_ = {double(t[1] - t[0]) * 1e-6, double(t[2] - t[1]) * 1e-6};
+    }
     if (cpu_lines) {
         // Every kind drawn by the passes above.
         const CpuLines lines = pending_cpu_lines_.valid() ? pending_cpu_lines_.get() : cpu_lines_.prepare(mesh, frame, s);

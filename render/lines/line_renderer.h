@@ -31,6 +31,17 @@ public:
     void set_complete_frames(bool complete) { complete_frames_ = complete; }
     // The compute path's segment buffer (null without GL 4.3).
     SegmentBuffer* segment_buffer();
+    // For benchmarks: GPU times (GL timestamps) of the last frame's line
+    // passes, milliseconds: cutting the lines (compute passes, or the
+    // geometry-shader passes, which also draw), and drawing the compute
+    // path's segments. Read back at the end of each draw (a stall), only
+    // while on.
+    struct GpuTimes {
+        double extract_ms = 0, draw_ms = 0;
+    };
+    void set_gpu_timing(bool on) { gpu_timing_ = on; }
+    GpuTimes gpu_times() const { return gpu_times_; }
+    void clear_gpu_times() { gpu_times_ = {}; }  // a frame without line passes
     // Starts making this frame's lines on the CPU (render/lines/cpu_lines.h) on
     // another thread, so that they are made while the GL draws the surface
     // (a software rasteriser transforms and bins the surface's triangles on
@@ -59,6 +70,9 @@ private:
     struct ComputeFamilies;
     std::unique_ptr<ComputeFamilies> compute_;  // null without GL 4.3
     bool complete_frames_ = true;
+    bool gpu_timing_ = false;
+    GpuTimes gpu_times_;
+    GLuint timestamps_[3] = {0, 0, 0};
     CpuLinePass cpu_lines_;
     std::future<CpuLines> pending_cpu_lines_;
 };
