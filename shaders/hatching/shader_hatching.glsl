@@ -72,11 +72,22 @@ vec4 phasor_sums(vec2 p, vec2 across1, vec2 across2, float spacing, bool second,
     return sums;
 }
 
+// |atan2(y, x)| in [0, pi], within 0.0003 rad of it (a polynomial in the
+// smaller-over-larger ratio): the stroke profile needs no more, and a
+// software rasteriser pays for every exact arctangent.
+float abs_angle(vec2 v) {
+    vec2 a = abs(v);
+    float t = min(a.x, a.y) / max(max(a.x, a.y), 1e-20), t2 = t * t;
+    float r = ((-0.0464964749 * t2 + 0.15931422) * t2 - 0.327622764) * t2 * t + t;
+    if (a.y > a.x) r = 1.57079637 - r;
+    return v.x < 0.0 ? 3.14159274 - r : r;
+}
+
 // Coverage in [0, 1] of a family's strokes from its phasor sum: the distance
 // to the stroke's centre line (phase 0) in pixels; where the kernels cancel,
 // the phase is undefined: no stroke there.
 float stroke_coverage(vec2 sum, float weight, float spacing, float width) {
-    float distance_px = abs(atan(sum.y, sum.x)) * spacing / (2.0 * HATCH_PI);
+    float distance_px = abs_angle(sum) * spacing / (2.0 * HATCH_PI);
     float coherence = smoothstep(0.05, 0.25, length(sum) / max(weight, 1e-6));
     return coherence * clamp(0.5 * width + 0.5 - distance_px, 0.0, 1.0);
 }
