@@ -29,9 +29,9 @@ MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, con
     units_ = prepared.units;
     turned_ = prepared.turned_inside_out;
     // Sharp edges split the mesh: each side gets its own normals and curvature.
-    crease_angle_ = render::resolved_crease_angle(settings.crease_angle, input);
-    const std::vector<glm::uvec2> creases = find_creases(input, crease_angle_);
-    drawn_ = split_at_creases(std::move(input), creases);
+    ResolvedCreases creases = resolve_creases(input, settings.crease_angle);
+    crease_angle_ = creases.angle;
+    drawn_ = split_at_creases(std::move(input), creases.creases);
     bounds_ = render::bounding_sphere(drawn_.mesh);
     // With detail, the per-vertex curvature is needed only where a view
     // blends in the raw estimate (zoomed in on a coarse mesh): computed then.

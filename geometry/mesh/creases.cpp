@@ -1,8 +1,11 @@
 #include "creases.h"
 
+#include "edge_bends.h"
 #include "edge_table.h"
 #include "union_find.h"
 #include "vertex_faces.h"
+
+#include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
 
@@ -18,36 +21,54 @@ glm::vec3 face_normal(const Mesh& mesh, const Face& f) {
 }
 
 std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg) {
-    std::vector<glm::uvec2> out;
-    if (!(angle_deg > 0)) return out;
-    const float cos_limit = std::cos(angle_deg * float(M_PI) / 180.0f);
-    const EdgeTable edges = build_edge_table(mesh);
-    for (size_t e = 0; e < edges.size(); ++e) {
-        if (edges.face_count(e) != 2) continue;
-        const glm::vec3 a = face_normal(mesh, mesh.faces[edges.halfedges[edges.first[e]] / 3]);
-        const glm::vec3 b = face_normal(mesh, mesh.faces[edges.halfedges[edges.first[e] + 1] / 3]);
-        if (a == glm::vec3(0.0f) || b == glm::vec3(0.0f)) continue;  // degenerate faces have no angle
-        if (glm::dot(a, b) < cos_limit) out.push_back(edges.ends[e]);
-    }
+    if (!(angle_deg > 0)) return {};
+    return measure_edge_bends(mesh, build_vertex_faces(mesh), angle_deg).creases;
+}
+
+namespace {
+
+bool auto_creases_on(const EdgeBends& bends) { return bends.interior > 0 && 2 * bends.between <= bends.interior; }
+
+}  // namespace
+
+float auto_crease_angle(const Mesh& mesh) {
+    return auto_creases_on(measure_edge_bends(mesh, build_vertex_faces(mesh), 0)) ? kAutoCreaseAngle : 0.0f;
+}
+
+ResolvedCreases resolve_creases(const Mesh& mesh, float setting) {
+    ResolvedCreases out;
+    if (setting == 0) return out;
+    EdgeBends bends = measure_edge_bends(mesh, build_vertex_faces(mesh), setting < 0 ? kAutoCreaseAngle : setting);
+    out.angle = setting > 0 ? setting : auto_creases_on(bends) ? kAutoCreaseAngle : 0.0f;
+    if (out.angle > 0) out.creases = std::move(bends.creases);
     return out;
 }
 
-float auto_crease_angle(const Mesh& mesh) {
-    const EdgeTable edges = build_edge_table(mesh);
-    const float cos_flat = std::cos(0.5f * float(M_PI) / 180.0f);
-    const float cos_sharp = std::cos(kAutoCreaseAngle * float(M_PI) / 180.0f);
-    size_t interior = 0, between = 0;
-    for (size_t e = 0; e < edges.size(); ++e) {
-        if (edges.face_count(e) != 2) continue;
-        const glm::vec3 a = face_normal(mesh, mesh.faces[edges.halfedges[edges.first[e]] / 3]);
-        const glm::vec3 b = face_normal(mesh, mesh.faces[edges.halfedges[edges.first[e] + 1] / 3]);
-        if (a == glm::vec3(0.0f) || b == glm::vec3(0.0f)) continue;
-        ++interior;
-        const float d = glm::dot(a, b);
-        between += d < cos_flat && d >= cos_sharp;
-    }
-    return interior > 0 && 2 * between <= interior ? kAutoCreaseAngle : 0.0f;
+namespace {
+
+// The corners at the marked vertices as (vertex << 32 | corner), sorted: each
+// vertex's corners in face order, as in its row of vertex_faces.h. One pass
+// over the faces, in blocks whose results are joined in order.
+std::vector<uint64_t> corners_at(const Mesh& mesh, const std::vector<uint8_t>& marked) {
+    constexpr size_t kBlock = 65536;
+    const size_t nf = mesh.face_count(), blocks = (nf + kBlock - 1) / kBlock;
+    std::vector<std::vector<uint64_t>> found(blocks);
+    parallel_for_chunks(
+        blocks,
+        [&](size_t first, size_t last) {
+            for (size_t b = first; b < last; ++b)
+                for (size_t f = b * kBlock; f < std::min(nf, (b + 1) * kBlock); ++f)
+                    for (uint32_t i = 0; i < 3; ++i)
+                        if (marked[mesh.faces[f][i]]) found[b].push_back(uint64_t(mesh.faces[f][i]) << 32 | (3 * f + i));
+        },
+        1);
+    std::vector<uint64_t> all;
+    for (const auto& b : found) all.insert(all.end(), b.begin(), b.end());
+    std::sort(all.begin(), all.end());
+    return all;
 }
+
+}  // namespace
 
 SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases) {
     SplitMesh out;
@@ -58,33 +79,45 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases) {
         out.mesh = std::move(mesh);
         return out;
     }
-    out.mesh = mesh;  // split in place below, reading the input's faces
 
     std::vector<uint64_t> crease_keys;
     crease_keys.reserve(creases.size());
-    for (const auto& c : creases) crease_keys.push_back(uint64_t(std::min(c.x, c.y)) << 32 | std::max(c.x, c.y));
+    for (const auto& c : creases)
+        if (c.x != c.y && c.x < nv && c.y < nv)
+            crease_keys.push_back(uint64_t(std::min(c.x, c.y)) << 32 | std::max(c.x, c.y));
     std::sort(crease_keys.begin(), crease_keys.end());
+    crease_keys.erase(std::unique(crease_keys.begin(), crease_keys.end()), crease_keys.end());
     auto is_crease = [&](uint32_t a, uint32_t b) {
         const uint64_t key = uint64_t(std::min(a, b)) << 32 | std::max(a, b);
         return std::binary_search(crease_keys.begin(), crease_keys.end(), key);
     };
     std::vector<uint8_t> on_crease(nv, 0);
-    for (const auto& c : creases) on_crease[c.x] = on_crease[c.y] = 1;
+    for (const auto& c : creases)
+        if (c.x < nv && c.y < nv) on_crease[c.x] = on_crease[c.y] = 1;
 
     // Around each crease vertex: faces joined across its non-crease edges.
-    const VertexFaces vf = build_vertex_faces(mesh);
-    for (size_t v = 0; v < nv; ++v) {
-        if (!on_crease[v]) continue;
-        const uint32_t begin = vf.begin(v), n = vf.end(v) - begin;
+    // The faces are read as they came in; the new corner numbers are kept
+    // aside (moves) and written once every vertex is done.
+    const std::vector<uint64_t> fans = corners_at(mesh, on_crease);
+    auto fan_of = [&](uint32_t v) {  // [begin, end) in fans
+        const auto lo = std::lower_bound(fans.begin(), fans.end(), uint64_t(v) << 32);
+        const auto hi = std::lower_bound(lo, fans.end(), uint64_t(v + 1) << 32);
+        return std::make_pair(size_t(lo - fans.begin()), size_t(hi - fans.begin()));
+    };
+    std::vector<std::pair<uint32_t, uint32_t>> moves;  // (corner, its vertex's copy)
+    for (size_t begin = 0; begin < fans.size();) {
+        const uint32_t v = uint32_t(fans[begin] >> 32);
+        const uint32_t n = uint32_t(fan_of(v).second - begin);
+        auto face_of = [&](uint32_t i) -> const Face& { return mesh.faces[uint32_t(fans[begin + i]) / 3]; };
         UnionFind sides(n);
         for (uint32_t i = 0; i < n; ++i)
             for (uint32_t j = i + 1; j < n; ++j) {
-                const Face& fi = mesh.faces[vf.corners[begin + i] / 3];
-                const Face& fj = mesh.faces[vf.corners[begin + j] / 3];
+                const Face& fi = face_of(i);
+                const Face& fj = face_of(j);
                 // The other two corners of each face; a shared one is a shared edge at v.
                 for (int a = 0; a < 3; ++a)
                     for (int b = 0; b < 3; ++b)
-                        if (fi[a] != v && fi[a] == fj[b] && !is_crease(uint32_t(v), fi[a])) sides.unite(i, j);
+                        if (fi[a] != v && fi[a] == fj[b] && !is_crease(v, fi[a])) sides.unite(i, j);
             }
         std::vector<uint32_t> copy_of_root(n, UINT32_MAX);
         bool first = true;
@@ -92,27 +125,46 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases) {
             const uint32_t root = sides.find(i);
             if (copy_of_root[root] == UINT32_MAX) {
                 if (first) {
-                    copy_of_root[root] = uint32_t(v);
+                    copy_of_root[root] = v;
                     first = false;
                 } else {
-                    copy_of_root[root] = uint32_t(out.mesh.positions.size());
-                    out.mesh.positions.push_back(mesh.positions[v]);
-                    out.original.push_back(uint32_t(v));
+                    copy_of_root[root] = uint32_t(out.original.size());
+                    out.original.push_back(v);
                 }
             }
-            const uint32_t corner = vf.corners[begin + i];
-            out.mesh.faces[corner / 3][corner % 3] = copy_of_root[root];
+            if (copy_of_root[root] != v) moves.push_back({uint32_t(fans[begin + i]), copy_of_root[root]});
         }
+        begin += n;
     }
 
-    // The creases in the split numbering (the first face's copy) and their faces.
-    const EdgeTable edges = build_edge_table(mesh);
-    for (size_t e = 0; e < edges.size(); ++e) {
-        if (edges.face_count(e) != 2 || !is_crease(edges.ends[e].x, edges.ends[e].y)) continue;
-        const uint32_t h0 = edges.halfedges[edges.first[e]], h1 = edges.halfedges[edges.first[e] + 1];
-        const Face& f = out.mesh.faces[h0 / 3];
-        out.creases.push_back({f[h0 % 3], f[(h0 % 3 + 1) % 3]});
-        out.crease_faces.push_back({h0 / 3, h1 / 3});
+    // The creases in the split numbering (the first face's copy) and their
+    // faces: the edges between exactly two valid faces, found around their
+    // smaller vertex, in sorted order (as an edge table lists them).
+    for (const uint64_t key : crease_keys) {
+        const uint32_t v0 = uint32_t(key >> 32), v1 = uint32_t(key);
+        const auto [lo, hi] = fan_of(v0);
+        uint32_t faces[2], count = 0;
+        for (size_t k = lo; k < hi; ++k) {
+            const uint32_t f = uint32_t(fans[k]) / 3;
+            const Face& face = mesh.faces[f];
+            if (is_valid_face(face, nv) && (face[0] == v1 || face[1] == v1 || face[2] == v1) && count++ < 2)
+                faces[count - 1] = f;
+        }
+        if (count != 2) continue;
+        const Face& first_face = mesh.faces[faces[0]];
+        auto on_edge = [&](int i) { return first_face[i % 3] == v0 || first_face[i % 3] == v1; };
+        int i = 0;  // the first face's half-edge along the crease: i -> i + 1
+        while (!(on_edge(i) && on_edge(i + 1))) ++i;
+        out.creases.push_back({uint32_t(i), faces[0]});  // corner numbers for now: renumbered below
+        out.crease_faces.push_back({faces[0], faces[1]});
+    }
+
+    out.mesh = std::move(mesh);
+    for (size_t v = nv; v < out.original.size(); ++v) out.mesh.positions.push_back(out.mesh.positions[out.original[v]]);
+    for (const auto& [corner, copy] : moves) out.mesh.faces[corner / 3][corner % 3] = copy;
+    for (glm::uvec2& c : out.creases) {
+        const Face& f = out.mesh.faces[c.y];
+        c = {f[c.x], f[(c.x + 1) % 3]};
     }
     return out;
 }

@@ -40,6 +40,15 @@ std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg);
 constexpr float kAutoCreaseAngle = 40.0f;
 float auto_crease_angle(const Mesh& mesh);  // kAutoCreaseAngle or 0
 
+// The angle a `--crease-angle` setting resolves to (< 0: auto, as
+// auto_crease_angle; 0: off) and the creases at it (as find_creases), from
+// one look at the edges (edge_bends.h) instead of one for each.
+struct ResolvedCreases {
+    float angle = 0;
+    std::vector<glm::uvec2> creases;
+};
+ResolvedCreases resolve_creases(const Mesh& mesh, float setting);
+
 struct SplitMesh {
     Mesh mesh;                            // the input with crease vertices duplicated per side
     std::vector<uint32_t> original;       // for each vertex of `mesh`, the input vertex it copies
@@ -51,7 +60,8 @@ struct SplitMesh {
 // the faces that reach each other across non-crease edges form one side and
 // share one copy of the vertex. The first side keeps the vertex's number;
 // extra copies are appended. Faces keep their order. Deterministic. Takes
-// the mesh by value: callers done with theirs move it in.
+// the mesh by value: callers done with theirs move it in. Costs one pass
+// over the faces plus work around the crease vertices.
 SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases);
 
 }  // namespace kappa

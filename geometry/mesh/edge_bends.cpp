@@ -1,0 +1,117 @@
+#include "edge_bends.h"
+
+#include "creases.h"
+#include "edge_table.h"
+
+#include "geometry/io/prefault.h"
+#include "geometry/parallel/parallel.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace kappa {
+
+namespace {
+
+// Vertices per block: blocks, not threads, own the partial results, so the
+// sums and the crease order do not depend on the thread count.
+constexpr size_t kBlock = 16384;
+// How many corners ahead the pass asks for faces and normals (about four vertices).
+constexpr size_t kAhead = 24;
+
+// Sorts a short run of keys in place (most vertices have 6 to 12).
+void sort_keys(std::vector<uint64_t>& keys) {
+    if (keys.size() > 32) {
+        std::sort(keys.begin(), keys.end());
+        return;
+    }
+    for (size_t i = 1; i < keys.size(); ++i) {
+        const uint64_t key = keys[i];
+        size_t j = i;
+        for (; j > 0 && keys[j - 1] > key; --j) keys[j] = keys[j - 1];
+        keys[j] = key;
+    }
+}
+
+}  // namespace
+
+std::vector<glm::vec3> face_normals(const Mesh& mesh) {
+    std::vector<glm::vec3> normals;
+    io::reserve_prefaulted(normals, mesh.face_count());
+    normals.resize(mesh.face_count());
+    parallel_for(mesh.face_count(), [&](size_t f) {
+        normals[f] = is_valid_face(mesh.faces[f], mesh.vertex_count()) ? face_normal(mesh, mesh.faces[f])
+                                                                         : glm::vec3(0.0f);
+    });
+    return normals;
+}
+
+EdgeBends measure_edge_bends(const Mesh& mesh, const VertexFaces& vf, float angle_deg) {
+    const size_t nv = mesh.vertex_count();
+    const std::vector<glm::vec3> normals = face_normals(mesh);
+    const float cos_flat = std::cos(0.5f * float(M_PI) / 180.0f);
+    const float cos_sharp = std::cos(kAutoCreaseAngle * float(M_PI) / 180.0f);
+    const bool find = angle_deg > 0;
+    const float cos_limit = std::cos(angle_deg * float(M_PI) / 180.0f);
+
+    const size_t blocks = (nv + kBlock - 1) / kBlock;
+    std::vector<EdgeBends> partial(blocks);
+    parallel_for_chunks(
+        blocks,
+        [&](size_t first, size_t last) {
+            std::vector<uint64_t> keys;  // (w << 32 | face) for the faces around v with a corner w > v
+            for (size_t b = first; b < last; ++b) {
+                EdgeBends& out = partial[b];
+                for (size_t v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v) {
+                    keys.clear();
+                    for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) {
+                        // The faces around a vertex lie anywhere in the mesh: fetch those a few vertices
+                        // ahead now, or every face and normal read waits for memory.
+                        if (k + kAhead < vf.corners.size()) {
+                            __builtin_prefetch(&mesh.faces[vf.corners[k + kAhead] / 3]);
+                            __builtin_prefetch(&normals[vf.corners[k + kAhead] / 3]);
+                        }
+                        const uint32_t c = vf.corners[k], f = c / 3, i = c % 3;
+                        const Face& face = mesh.faces[f];
+                        if (!is_valid_face(face, nv)) continue;
+                        for (const uint32_t w : {face[(i + 1) % 3], face[(i + 2) % 3]})
+                            if (w > v) keys.push_back(uint64_t(w) << 32 | f);
+                    }
+                    sort_keys(keys);  // by w, then face: each edge's faces in face order, as in the edge table
+                    for (size_t i = 0; i < keys.size();) {
+                        size_t j = i + 1;
+                        while (j < keys.size() && keys[j] >> 32 == keys[i] >> 32) ++j;
+                        if (j - i == 2) {
+                            const uint32_t fa = uint32_t(keys[i]), fb = uint32_t(keys[i + 1]);
+                            const glm::vec3 a = normals[fa], b = normals[fb];
+                            if (a != glm::vec3(0.0f) && b != glm::vec3(0.0f)) {  // degenerate faces have no angle
+                                const float d = glm::dot(a, b);
+                                ++out.interior;
+                                out.between += d < cos_flat && d >= cos_sharp;
+                                if (find && d < cos_limit) {
+                                    out.creases.push_back({uint32_t(v), uint32_t(keys[i] >> 32)});
+                                    out.crease_faces.push_back({fa, fb});
+                                }
+                            }
+                        }
+                        i = j;
+                    }
+                }
+            }
+        },
+        1);
+
+    EdgeBends all;
+    for (const EdgeBends& p : partial) {  // in vertex order: the creases come out sorted
+        all.interior += p.interior;
+        all.between += p.between;
+        all.creases.insert(all.creases.end(), p.creases.begin(), p.creases.end());
+        all.crease_faces.insert(all.crease_faces.end(), p.crease_faces.begin(), p.crease_faces.end());
+    }
+    return all;
+}
+
+}  // namespace kappa
