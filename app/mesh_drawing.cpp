@@ -29,16 +29,22 @@ MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, con
     units_ = prepared.units;
     turned_ = prepared.turned_inside_out;
     // Sharp edges split the mesh: each side gets its own normals and curvature.
-    ResolvedCreases creases = resolve_creases(input, settings.crease_angle);
+    // The vertex-face rows serve the creases, then (made the split mesh's)
+    // the fields and the scale space: built once, timed as the fields' adjacency.
+    const auto t_adjacency = std::chrono::steady_clock::now();
+    adjacency_ = build_vertex_faces(input);
+    times_.adjacency = seconds_since(t_adjacency);
+    ResolvedCreases creases = resolve_creases(input, adjacency_, settings.crease_angle);
     crease_angle_ = creases.angle;
-    drawn_ = split_at_creases(std::move(input), creases.creases);
+    drawn_ = split_at_creases(std::move(input), creases.creases, &adjacency_);
     bounds_ = render::bounding_sphere(drawn_.mesh);
     // With detail, the per-vertex curvature is needed only where a view
     // blends in the raw estimate (zoomed in on a coarse mesh): computed then.
     const bool detail = settings.detail > 0;
-    fields_ = detail && !smoothing.automatic ? compute_surface_normals(drawn_.mesh, &times_) : compute_fields();
+    fields_ = detail && !smoothing.automatic ? compute_surface_normals(drawn_.mesh, &times_, &adjacency_)
+                                             : compute_fields();
     const auto t_scale = std::chrono::steady_clock::now();
-    if (detail) detail_source_ = render::make_detail_source(drawn_.mesh, fields_);
+    if (detail) detail_source_ = render::make_detail_source(drawn_.mesh, fields_, &adjacency_);
     else fs_ = feature_size(drawn_.mesh, fields_);  // with detail: per view
     scale_s_ = seconds_since(t_scale);
 }
@@ -47,7 +53,7 @@ SurfaceFields MeshDrawing::compute_fields() {
     SmoothingOptions o = smoothing_;  // widths in drawing units
     o.normals = units_.length_to_drawing(o.normals), o.curvature = units_.length_to_drawing(o.curvature);
     o.dcurv = units_.length_to_drawing(o.dcurv);
-    return compute_surface_fields(drawn_.mesh, o, &times_, progress_);
+    return compute_surface_fields(drawn_.mesh, o, &times_, progress_, &adjacency_);
 }
 
 float MeshDrawing::prepare_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size) {

@@ -77,6 +77,7 @@ private:
     ProgressFn progress_;
     float crease_angle_ = 0;
     SplitMesh drawn_;
+    VertexFaces adjacency_;  // drawn_.mesh's vertex-face rows
     render::BoundingSphere bounds_;
     StageTimes times_;
     SurfaceFields fields_;

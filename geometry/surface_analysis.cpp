@@ -97,7 +97,7 @@ void estimate_other(const Mesh& mesh, const VertexFaces& vf, FaceGeometry& faces
 }
 
 SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, StageTimes* times,
-                      const ProgressFn& progress, bool curvature) {
+                      const ProgressFn& progress, bool curvature, const VertexFaces* adjacency) {
     StageTimes local;
     StageTimes& t = times ? *times : local;
     auto report = [&](float f, const char* stage) {
@@ -106,11 +106,12 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
     SurfaceFields out;
 
     report(0.0f, "adjacency");
-    VertexFaces vf;
-    {
+    VertexFaces built;
+    if (!adjacency) {
         StageTimer timer(&t.adjacency);
-        vf = build_vertex_faces(mesh);
+        built = build_vertex_faces(mesh);
     }
+    const VertexFaces& vf = adjacency ? *adjacency : built;
 
     report(0.1f, "areas");
     FaceGeometry faces;
@@ -185,12 +186,12 @@ SurfaceFields compute(const Mesh& mesh, const SmoothingOptions& requested, Stage
 }  // namespace
 
 SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing, StageTimes* times,
-                                     const ProgressFn& progress) {
-    return compute(mesh, smoothing, times, progress, true);
+                                     const ProgressFn& progress, const VertexFaces* adjacency) {
+    return compute(mesh, smoothing, times, progress, true, adjacency);
 }
 
-SurfaceFields compute_surface_normals(const Mesh& mesh, StageTimes* times) {
-    return compute(mesh, {}, times, {}, false);
+SurfaceFields compute_surface_normals(const Mesh& mesh, StageTimes* times, const VertexFaces* adjacency) {
+    return compute(mesh, {}, times, {}, false, adjacency);
 }
 
 }  // namespace kappa

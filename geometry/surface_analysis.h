@@ -4,6 +4,7 @@
 #pragma once
 
 #include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 #include "surface_fields.h"
 
 #include <functional>
@@ -26,12 +27,18 @@ using ProgressFn = std::function<void(float, const char*)>;
 // normals (scale/noise_level.h) and every width left at 0 is chosen from it
 // (scale/auto_smoothing.h); explicit widths are kept. The widths used and
 // the noise estimate are in the result's `smoothing` and `noise`.
+//
+// adjacency: the mesh's vertex-face rows (geometry/mesh/vertex_faces.h) when
+// the caller has them already (drawing builds them once for the creases, the
+// fields and the scale space); null: built here (timed as `adjacency`).
 SurfaceFields compute_surface_fields(const Mesh& mesh, const SmoothingOptions& smoothing = {},
-                                     StageTimes* times = nullptr, const ProgressFn& progress = {});
+                                     StageTimes* times = nullptr, const ProgressFn& progress = {},
+                                     const VertexFaces* adjacency = nullptr);
 
 // Only the first stages: normals, point areas and flags (k1, k2, d1, d2 and
 // dcurv left empty). What the scale space needs when a drawing's scales are
 // all above the raw estimate's (render/fields/detail_fields.h).
-SurfaceFields compute_surface_normals(const Mesh& mesh, StageTimes* times = nullptr);
+SurfaceFields compute_surface_normals(const Mesh& mesh, StageTimes* times = nullptr,
+                                      const VertexFaces* adjacency = nullptr);
 
 }  // namespace kappa

@@ -167,6 +167,15 @@ void check_same(const Mesh& m, float angle) {
     CHECK(split.original == expected.original);
     CHECK(split.creases == expected.creases);
     CHECK(split.crease_faces == expected.crease_faces);
+    // With the vertex-face rows given: the same split, and the rows made the split mesh's.
+    VertexFaces vf = build_vertex_faces(m);
+    CHECK(resolve_creases(m, vf, angle).creases == creases);
+    const SplitMesh with_rows = split_at_creases(m, creases, &vf);
+    CHECK(with_rows.mesh.faces == expected.mesh.faces);
+    CHECK(with_rows.creases == expected.creases);
+    const VertexFaces rebuilt = build_vertex_faces(with_rows.mesh);
+    CHECK(vf.offsets == rebuilt.offsets);
+    CHECK(vf.corners == rebuilt.corners);
 }
 
 }  // namespace

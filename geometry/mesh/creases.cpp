@@ -36,9 +36,14 @@ float auto_crease_angle(const Mesh& mesh) {
 }
 
 ResolvedCreases resolve_creases(const Mesh& mesh, float setting) {
+    if (setting == 0) return {};
+    return resolve_creases(mesh, build_vertex_faces(mesh), setting);
+}
+
+ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float setting) {
     ResolvedCreases out;
     if (setting == 0) return out;
-    EdgeBends bends = measure_edge_bends(mesh, build_vertex_faces(mesh), setting < 0 ? kAutoCreaseAngle : setting);
+    EdgeBends bends = measure_edge_bends(mesh, vf, setting < 0 ? kAutoCreaseAngle : setting);
     out.angle = setting > 0 ? setting : auto_creases_on(bends) ? kAutoCreaseAngle : 0.0f;
     if (out.angle > 0) out.creases = std::move(bends.creases);
     return out;
@@ -68,9 +73,63 @@ std::vector<uint64_t> corners_at(const Mesh& mesh, const std::vector<uint8_t>& m
     return all;
 }
 
+// Makes `vf` the rows of the split mesh: `moves` (corner, copy) take
+// corners out of their vertex's row (compacting the rows in place) into the
+// rows of the copies, vertices original.size() - copies on; original[copy]
+// is the vertex a copy was made from.
+void move_corners(VertexFaces& vf, std::vector<std::pair<uint32_t, uint32_t>> moves,
+                  const std::vector<uint32_t>& original, size_t first_copy) {
+    if (moves.empty()) return;
+    const size_t vertex_count = original.size();
+    std::vector<uint32_t> moved;  // sorted corners
+    for (const auto& m : moves) moved.push_back(m.first);
+    std::sort(moved.begin(), moved.end());
+    auto is_moved = [&](uint32_t c) { return std::binary_search(moved.begin(), moved.end(), c); };
+    std::vector<uint32_t> losing;  // the vertices that lose corners, sorted
+    for (const auto& m : moves) losing.push_back(original[m.second]);
+    std::sort(losing.begin(), losing.end());
+    losing.erase(std::unique(losing.begin(), losing.end()), losing.end());
+    // Rows before the first of them stay where they are; later ones shift down.
+    uint32_t out = vf.begin(losing.front());
+    auto next_losing = losing.begin();
+    for (size_t v = losing.front(); v < first_copy; ++v) {
+        const uint32_t begin = vf.begin(v), end = vf.end(v);
+        vf.offsets[v] = out;
+        if (next_losing != losing.end() && *next_losing == v) {
+            ++next_losing;
+            for (uint32_t k = begin; k < end; ++k)
+                if (!is_moved(vf.corners[k])) vf.corners[out++] = vf.corners[k];
+        } else {
+            if (out != begin)  // shifting down: a forward copy is safe
+                std::copy(vf.corners.begin() + begin, vf.corners.begin() + end, vf.corners.begin() + out);
+            out += end - begin;
+        }
+    }
+    // The copies' rows: corners in increasing order, as build_vertex_faces gives.
+    std::sort(moves.begin(), moves.end(), [](const auto& a, const auto& b) {
+        return a.second != b.second ? a.second < b.second : a.first < b.first;
+    });
+    vf.offsets.resize(vertex_count + 1);
+    size_t m = 0;
+    for (size_t copy = first_copy; copy < vertex_count; ++copy) {
+        vf.offsets[copy] = out;
+        for (; m < moves.size() && moves[m].second == copy; ++m) vf.corners[out++] = moves[m].first;
+    }
+    vf.offsets[vertex_count] = out;
+}
+
+// As corners_at, from the vertex-face rows.
+std::vector<uint64_t> crease_corners(const VertexFaces& vf, const std::vector<uint8_t>& marked) {
+    std::vector<uint64_t> all;
+    for (size_t v = 0; v < marked.size(); ++v)
+        if (marked[v])
+            for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) all.push_back(uint64_t(v) << 32 | vf.corners[k]);
+    return all;
+}
+
 }  // namespace
 
-SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases) {
+SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, VertexFaces* vf) {
     SplitMesh out;
     const size_t nv = mesh.vertex_count();
     out.original.resize(nv);
@@ -98,7 +157,7 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases) {
     // Around each crease vertex: faces joined across its non-crease edges.
     // The faces are read as they came in; the new corner numbers are kept
     // aside (moves) and written once every vertex is done.
-    const std::vector<uint64_t> fans = corners_at(mesh, on_crease);
+    const std::vector<uint64_t> fans = vf ? crease_corners(*vf, on_crease) : corners_at(mesh, on_crease);
     auto fan_of = [&](uint32_t v) {  // [begin, end) in fans
         const auto lo = std::lower_bound(fans.begin(), fans.end(), uint64_t(v) << 32);
         const auto hi = std::lower_bound(lo, fans.end(), uint64_t(v + 1) << 32);
@@ -162,6 +221,7 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases) {
     out.mesh = std::move(mesh);
     for (size_t v = nv; v < out.original.size(); ++v) out.mesh.positions.push_back(out.mesh.positions[out.original[v]]);
     for (const auto& [corner, copy] : moves) out.mesh.faces[corner / 3][corner % 3] = copy;
+    if (vf) move_corners(*vf, std::move(moves), out.original, nv);
     for (glm::uvec2& c : out.creases) {
         const Face& f = out.mesh.faces[c.y];
         c = {f[c.x], f[(c.x + 1) % 3]};

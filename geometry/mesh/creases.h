@@ -12,6 +12,7 @@
 #pragma once
 
 #include "mesh.h"
+#include "vertex_faces.h"
 
 #include <glm/vec2.hpp>
 
@@ -48,6 +49,8 @@ struct ResolvedCreases {
     std::vector<glm::uvec2> creases;
 };
 ResolvedCreases resolve_creases(const Mesh& mesh, float setting);
+// The same with the mesh's vertex-face rows given (build_vertex_faces).
+ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float setting);
 
 struct SplitMesh {
     Mesh mesh;                            // the input with crease vertices duplicated per side
@@ -62,6 +65,9 @@ struct SplitMesh {
 // extra copies are appended. Faces keep their order. Deterministic. Takes
 // the mesh by value: callers done with theirs move it in. Costs one pass
 // over the faces plus work around the crease vertices.
-SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases);
+// With `vf` (the input's vertex-face rows), they are made the split mesh's,
+// as build_vertex_faces would build them: the rows of the crease vertices
+// lose the corners that moved to copies, which get rows of their own.
+SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, VertexFaces* vf = nullptr);
 
 }  // namespace kappa

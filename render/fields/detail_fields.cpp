@@ -28,10 +28,11 @@ constexpr float kIrregularFloorEdges = 2.0f;
 
 }  // namespace
 
-DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw) {
+DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw, const VertexFaces* adjacency) {
     DetailSource source;
     source.space = build_scale_space(mesh);
-    const NoiseLevel noise = estimate_noise_level(mesh, build_vertex_faces(mesh), raw.normals);
+    const NoiseLevel noise = adjacency ? estimate_noise_level(mesh, *adjacency, raw.normals)
+                                       : estimate_noise_level(mesh, build_vertex_faces(mesh), raw.normals);
     source.noise_floor = choose_smoothing_widths(noise).normals;
     source.contour_floor = kContourNoise * noise.sigma;
     return source;

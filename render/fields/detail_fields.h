@@ -17,6 +17,7 @@
 #pragma once
 
 #include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 #include "geometry/scale/scale_space.h"
 #include "geometry/surface_fields.h"
 #include "render/camera/camera.h"
@@ -36,7 +37,8 @@ struct DetailSource {
 };
 
 // raw: compute_surface_fields(mesh) without smoothing.
-DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw);
+// adjacency: the mesh's vertex-face rows when the caller has them (null: built here).
+DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw, const VertexFaces* adjacency = nullptr);
 
 struct DetailFields {
     SurfaceFields fields;                 // at the detail scale
