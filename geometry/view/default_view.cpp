@@ -4,7 +4,9 @@
 #include <glm/vec2.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <vector>
 
@@ -80,11 +82,121 @@ glm::vec2 front_of_upright_model(const Mesh& mesh, size_t step) {
     return glm::vec2(top > 0 ? axis : -axis);
 }
 
+
+// Flat area at the ends of each axis (choose_up, default_view.h): share of
+// the surface in faces within 5 degrees of perpendicular to axis k lying in
+// the slab of 2% of the extent at its low (end 0) or high (end 1) end.
+struct UpEvidence {
+    double flat[3][2] = {};
+    double extent[3] = {};
+};
+
+UpEvidence up_evidence(const Mesh& mesh, size_t step) {
+    UpEvidence e;
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh.positions)
+        if (std::isfinite(p.x + p.y + p.z)) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+    if (!(lo.x <= hi.x)) return e;
+    const glm::dvec3 size = hi - lo;
+    for (int k = 0; k < 3; ++k) e.extent[k] = size[k];
+    const double cos_flat = std::cos(glm::radians(5.0));
+    double total = 0;
+    for (size_t f = 0; f < mesh.face_count(); f += step) {
+        const Face& t = mesh.faces[f];
+        const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        const double w = 0.5 * glm::length(n);
+        if (!(w > 0) || !std::isfinite(w)) continue;
+        total += w;
+        const glm::dvec3 p = (a + b + c) / 3.0;
+        for (int k = 0; k < 3; ++k) {
+            if (!(std::fabs(n[k]) >= cos_flat * 2 * w) || !(size[k] > 0)) continue;
+            const double slab = 0.02 * size[k];
+            if (p[k] - lo[k] <= slab) e.flat[k][0] += w;
+            if (hi[k] - p[k] <= slab) e.flat[k][1] += w;
+        }
+    }
+    if (!(total > 0)) return UpEvidence{};
+    for (auto& axis : e.flat)
+        for (double& end : axis) end /= total;
+    return e;
+}
+
 }  // namespace
 
 glm::vec3 view_direction(ViewAngles a) {
     const float az = glm::radians(a.azimuth), el = glm::radians(a.elevation);
     return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+}
+
+ViewFrame view_frame(glm::vec3 up) {
+    const float len = glm::length(up);
+    if (!(len > 0) || !std::isfinite(len)) return {};
+    const glm::vec3 u = up / len;
+    if (u == glm::vec3(0, 1, 0)) return {};
+    ViewFrame f;
+    f.up = u;
+    if (u.y < -0.9999f) {  // about half a turn: about x
+        f.right = glm::normalize(glm::vec3(1, 0, 0) - u.x * u);
+        f.front = glm::normalize(glm::cross(f.right, u));
+    } else {
+        // Rodrigues: R v = v + w x v + w x (w x v) / (1 + c), w = y x u, c = y . u.
+        const glm::vec3 w = glm::cross(glm::vec3(0, 1, 0), u);
+        const float c = u.y;
+        auto rotate = [&](glm::vec3 v) { return v + glm::cross(w, v) + glm::cross(w, glm::cross(w, v)) / (1 + c); };
+        f.right = glm::normalize(rotate({1, 0, 0}));
+        f.front = glm::normalize(glm::cross(f.right, u));
+    }
+    return f;
+}
+
+glm::vec3 view_direction(ViewAngles a, glm::vec3 up) {
+    const ViewFrame f = view_frame(up);
+    if (f.up == glm::vec3(0, 1, 0)) return view_direction(a);
+    const glm::vec3 d = view_direction(a);
+    return glm::normalize(d.x * f.right + d.y * f.up + d.z * f.front);
+}
+
+glm::vec3 choose_up(const Mesh& mesh) {
+    const size_t step = std::max<size_t>(1, (mesh.face_count() + kMaxSampledFaces - 1) / kMaxSampledFaces);
+    const UpEvidence e = up_evidence(mesh, step);
+    const double largest = std::max({e.extent[0], e.extent[1], e.extent[2]});
+    const double base = e.flat[2][0];
+    const bool long_z = e.extent[2] >= 2 * e.extent[0] && e.extent[2] >= 2 * e.extent[1];
+    const bool z_up = largest > 0 && base >= (long_z ? 0.005 : 0.02) && base >= e.flat[2][1] &&
+                      base >= (long_z ? 1 : 4) * std::max(e.flat[1][0], e.flat[1][1]) &&
+                      base >= 2 * std::max(e.flat[0][0], e.flat[0][1]) && e.extent[2] >= 0.5 * largest;
+    return z_up ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+}
+
+ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up) {
+    const ViewFrame f = view_frame(up);
+    if (f.up == glm::vec3(0, 1, 0)) return choose_default_view(mesh);
+    // The mesh in the frame's coordinates: the y-up rules apply as they are.
+    Mesh turned;
+    turned.faces = mesh.faces;
+    turned.positions.reserve(mesh.positions.size());
+    for (const glm::vec3& p : mesh.positions)
+        turned.positions.push_back({glm::dot(p, f.right), glm::dot(p, f.up), glm::dot(p, f.front)});
+    return choose_default_view(turned);
+}
+
+DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up) {
+    DefaultView v;
+    const glm::vec3 u = up ? *up : choose_up(mesh);
+    v.up = view_frame(u).up;
+    v.angles = choose_default_view(mesh, v.up);
+    v.eye = view_direction(v.angles, v.up);
+    return v;
+}
+
+std::optional<glm::vec3> file_up_axis(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos || path.find_first_of("/\\", dot) != std::string::npos) return std::nullopt;
+    std::string ext = path.substr(dot + 1);
+    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext == "gltf" || ext == "glb") return glm::vec3(0, 1, 0);
+    return std::nullopt;
 }
 
 ViewAngles choose_default_view(const Mesh& mesh) {

@@ -4,7 +4,8 @@
 // Candidates: azimuths every 15 degrees around the y axis (0 = looking from
 // +z, 90 = from +x), leaving out the four axis-aligned ones (a plain front
 // or side view flattens CAD parts into their outline), at elevations 20 and
-// 35 degrees above the xz plane; y stays up, as in the models' own frames.
+// 35 degrees above the xz plane; y up (or the up axis below: then all of
+// this is about it, in the coordinates of its view_frame).
 // Score of a direction d (after the viewpoint entropy of Vazquez et al.
 // 2001, "Viewpoint selection using viewpoint entropy", with the surface
 // binned by orientation instead of by polygon, so tessellation does not
@@ -26,11 +27,31 @@
 // half-length off the whole's), that end is the front. A cube, a vase, a
 // part with a level top have none. Large meshes are sampled:
 // every ceil(F / 200000)-th face, so the choice is deterministic.
+//
+// Up: +y (the convention of most mesh formats and of glTF) unless the shape
+// says clearly otherwise; only +z, the other convention in use (STL, CAD,
+// many scans), can take its place. The evidence is a flat base: faces within
+// 5 degrees of perpendicular to an axis, in the slab of 2% of the model's
+// extent at one end of it (either side facing out, so inconsistently
+// oriented meshes count too), as a share of the whole surface. +z replaces
+// y when the flat area at the low end of z is at least 2% of the surface,
+// no less than at its high end, at least four times that at either end of
+// y and twice that at either end of x, and the model is not thin along z
+// (extent at least half the largest): a bust or a part for 3D printing
+// standing on its base. A standing figure has little base (its soles) but a
+// clear long axis: when z is at least twice as long as x and y, a base of
+// 0.5% of the surface is enough and need only match y's ends. A cube, a
+// plate, a model with a flat back or top, anything upside down in its file
+// and everything without a clear flat end keep +y. The views above are then
+// taken in the frame of that up axis (view_frame), front rule included.
 #pragma once
 
 #include "geometry/mesh/mesh.h"
 
 #include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
 
 namespace kappa {
 
@@ -39,11 +60,44 @@ struct ViewAngles {
     float elevation = 0;  // degrees above the xz plane
 };
 
-// Unit vector from the model towards the eye.
+// Unit vector from the model towards the eye, y up.
 glm::vec3 view_direction(ViewAngles angles);
 
-// The default view (see above). A mesh with no face area gets azimuth 30,
-// elevation 20.
+// The frame that angles are taken in when `up` is up: the rotation by the
+// smallest angle that takes +y to up, applied to x, y, z (so azimuth 0
+// looks from `front`, 90 from `right`). For up = +z: right +x, front -y
+// (the front view of z-up modelling tools); for up = -y: right +x, front -z.
+// up need not be unit; a zero or non-finite up gives the y-up frame.
+struct ViewFrame {
+    glm::vec3 right{1, 0, 0}, up{0, 1, 0}, front{0, 0, 1};
+};
+ViewFrame view_frame(glm::vec3 up);
+
+// Unit vector from the model towards the eye, the angles taken about `up`
+// (view_frame). Equals view_direction(angles) for up = +y.
+glm::vec3 view_direction(ViewAngles angles, glm::vec3 up);
+
+// The model's up axis by its shape (see above): a unit axis direction, +y
+// unless the evidence for another is clear.
+glm::vec3 choose_up(const Mesh& mesh);
+
+// The default view's angles (see above), about +y. A mesh with no face area
+// gets azimuth 30, elevation 20.
 ViewAngles choose_default_view(const Mesh& mesh);
+// The same about `up` (any non-zero direction; the view_frame of up).
+ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up);
+
+struct DefaultView {
+    glm::vec3 eye{0, 0, 1};  // unit, from the model's centre towards the eye
+    glm::vec3 up{0, 1, 0};   // unit, the model's up axis (the camera's up)
+    ViewAngles angles;       // eye = view_direction(angles, up)
+};
+// The whole default view: up = `up` when given (--up, or the file's own
+// convention), else choose_up(mesh); the angles about it.
+DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up = std::nullopt);
+
+// The up axis a file's format fixes, by its extension: +y for glTF (.gltf,
+// .glb: the reader gives the specification's +y up); none for the others.
+std::optional<glm::vec3> file_up_axis(const std::string& path);
 
 }  // namespace kappa
