@@ -21,8 +21,9 @@ void add_render_options(cli::Parser& p, RenderOptions& o) {
     p.size("--size", o.size, "image size in pixels (default 1024x768)")
         .option("--view", "AZ,EL",
                 "view from azimuth AZ (degrees around the y axis, 0 = from +z, 90 = from +x) and elevation EL "
-                "(degrees above the xz plane), framing the model (default: a three-quarter view chosen per "
-                "mesh, docs/rendering.md, 'The default view')",
+                "(degrees above the xz plane), framing the model; with --up, about that axis instead (for up "
+                "0,0,1: 0 = from -y, 90 = from +x) (default: a three-quarter view chosen per mesh, "
+                "docs/rendering.md, 'The default view')",
                 [&c](const std::string& v) {
                     const auto parts = cli::split(v, ',');
                     if (parts.size() != 2) return false;
@@ -35,7 +36,9 @@ void add_render_options(cli::Parser& p, RenderOptions& o) {
         .vec3("--eye", c.eye, "camera position; without --target, only its direction counts and the model stays "
               "framed (default: the default view)")
         .vec3("--target", c.target, "point the camera looks at (default: the bounding sphere's centre)")
-        .vec3("--up", c.up, "camera up direction (default 0,1,0)")
+        .vec3("--up", c.up, "the model's up axis: the default view and --view are taken about it, and it points "
+              "up in the image; with --eye, the camera's up direction (default: the file's convention or the "
+              "model's shape for the default view, 0,1,0 otherwise; kappa info prints the default view's)")
         .number("--fov", c.fov, "vertical field of view in degrees (default 30; with --xf the one rtsc uses for "
                 "that image size, so views saved there match)", 1, 170, "DEG")
         .text("--xf", c.xf_path, "trimesh2/rtsc viewpoint file (4x4 model-view matrix)", "FILE");
@@ -62,6 +65,8 @@ void finish_render_options(const cli::Parser& p, RenderOptions& o) {
         throw p.error("--size " + std::to_string(o.size.x) + "x" + std::to_string(o.size.y) +
                       " is too large (at most " + std::to_string(kMaxImageSide) + "x" + std::to_string(kMaxImageSide) +
                       ")");
+    if (c.has_up && !(glm::length(c.up) > 0 && std::isfinite(glm::length(c.up))))
+        throw p.error("--up must be a non-zero direction");
     const bool look_at = c.has_eye || c.has_target || c.has_up;
     if (!c.xf_path.empty() && (look_at || c.view))
         throw p.error("--xf cannot be combined with --view/--eye/--target/--up");
@@ -91,11 +96,22 @@ render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const
         camera.fov_y_deg = c.has_fov ? c.fov : render::rtsc_fov_y_deg(size.x, size.y);
         return camera;
     }
-    // The default view, or --view's angles, or --eye's direction: framed.
-    camera = c.view      ? render::Camera::framing(bounds, c.fov, aspect, view_direction(*c.view))
-             : c.has_eye ? render::Camera::framing(bounds, c.fov, aspect, c.eye - bounds.center)
-                         : render::Camera::default_view(mesh, bounds, c.fov, aspect);
-    if (!c.has_target && !c.has_up) return camera;
+    // --view's angles (about --up when given, else about +y), or the
+    // default view (about --up when given, else about the up axis the file or
+    // the shape gives), framed with that axis up.
+    if (!c.has_eye) {
+        const std::optional<glm::vec3> up = c.has_up ? std::optional<glm::vec3>(c.up) : c.file_up;
+        camera = !c.view ? render::Camera::default_view(mesh, bounds, c.fov, aspect, up)
+                 : c.has_up ? render::Camera::framing(bounds, c.fov, aspect, view_direction(*c.view, c.up), c.up)
+                            : render::Camera::framing(bounds, c.fov, aspect, view_direction(*c.view));
+        // The default view with --up goes on as before the up axis counted
+        // (a look_at from the framed eye: the same camera, to the last bit).
+        if (!c.has_target && (c.view || !c.has_up)) return camera;
+    } else {
+        // --eye's direction, framed.
+        camera = render::Camera::framing(bounds, c.fov, aspect, c.eye - bounds.center);
+        if (!c.has_target && !c.has_up) return camera;
+    }
     // The user's own camera.
     glm::vec3 eye = c.has_eye ? c.eye : camera.eye(), target = c.target;
     if (!c.has_target) {

@@ -27,6 +27,9 @@ struct CameraOptions {
     glm::vec3 eye{0}, target{0}, up{0, 1, 0};
     float fov = 30.0f;
     bool has_eye = false, has_target = false, has_up = false, has_fov = false;  // given explicitly
+    // The up axis the mesh file's format fixes (file_up_axis of its path:
+    // +y for glTF), used by the default view when --up is not given.
+    std::optional<glm::vec3> file_up;
 };
 
 struct RenderOptions {

@@ -34,20 +34,31 @@ Camera Camera::look_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fov_
     return c;
 }
 
-Camera Camera::framing(const BoundingSphere& sphere, float fov_y_deg, float aspect, glm::vec3 direction) {
+Camera Camera::framing(const BoundingSphere& sphere, float fov_y_deg, float aspect, glm::vec3 direction,
+                       glm::vec3 up_axis) {
     // The sphere touches the narrower side of the frustum: distance r / sin(half angle).
     const float half_y = glm::radians(fov_y_deg) * 0.5f;
     const float half_x = std::atan(std::tan(half_y) * aspect);
     const float distance = sphere.radius / std::sin(std::min(half_x, half_y));
     const float len = glm::length(direction);
     const glm::vec3 d = len > 0 && std::isfinite(len) ? direction / len : glm::vec3(0, 0, 1);
-    // y up, unless looking along y: then -z up (the top view's "north").
-    const glm::vec3 up = std::fabs(d.y) > 0.999f ? glm::vec3(0, 0, -d.y) : glm::vec3(0, 1, 0);
+    const ViewFrame frame = view_frame(up_axis);
+    glm::vec3 up;
+    if (frame.up == glm::vec3(0, 1, 0)) {
+        // y up, unless looking along y: then -z up (the top view's "north").
+        up = std::fabs(d.y) > 0.999f ? glm::vec3(0, 0, -d.y) : glm::vec3(0, 1, 0);
+    } else {
+        // The same about another up: looking along it, the frame's front down.
+        const float along = glm::dot(d, frame.up);
+        up = std::fabs(along) > 0.999f ? -along * frame.front : frame.up;
+    }
     return look_at(sphere.center + distance * d, sphere.center, up, fov_y_deg);
 }
 
-Camera Camera::default_view(const Mesh& mesh, const BoundingSphere& sphere, float fov_y_deg, float aspect) {
-    return framing(sphere, fov_y_deg, aspect, view_direction(choose_default_view(mesh)));
+Camera Camera::default_view(const Mesh& mesh, const BoundingSphere& sphere, float fov_y_deg, float aspect,
+                            std::optional<glm::vec3> up) {
+    const DefaultView v = kappa::default_view(mesh, up);
+    return framing(sphere, fov_y_deg, aspect, v.eye, v.up);
 }
 
 glm::vec3 Camera::eye() const { return glm::vec3(glm::inverse(view)[3]); }

@@ -9,6 +9,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 
 namespace kappa::render {
@@ -27,12 +28,16 @@ struct Camera {
 
     static Camera look_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fov_y_deg);
     // Looks at the sphere's centre from `direction` (from the centre towards
-    // the eye; default +z), y up, as close as the whole sphere fits in the
-    // image (aspect = width / height).
+    // the eye; default +z), `up` up (default +y; looking along it, the
+    // frame's front points down the image: geometry/view/default_view.h's
+    // view_frame), as close as the whole sphere fits in the image (aspect =
+    // width / height).
     static Camera framing(const BoundingSphere& sphere, float fov_y_deg, float aspect,
-                          glm::vec3 direction = glm::vec3(0, 0, 1));
-    // kappa's default view of a mesh (geometry/view/default_view.h), framed.
-    static Camera default_view(const Mesh& mesh, const BoundingSphere& sphere, float fov_y_deg, float aspect);
+                          glm::vec3 direction = glm::vec3(0, 0, 1), glm::vec3 up = glm::vec3(0, 1, 0));
+    // kappa's default view of a mesh (geometry/view/default_view.h: its up
+    // axis, from the shape unless `up` is given, and the view about it), framed.
+    static Camera default_view(const Mesh& mesh, const BoundingSphere& sphere, float fov_y_deg, float aspect,
+                               std::optional<glm::vec3> up = std::nullopt);
 
     glm::vec3 eye() const;  // in model coordinates
     // Perspective projection with near/far planes tight around `sphere`.
