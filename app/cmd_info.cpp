@@ -8,6 +8,7 @@
 #include "geometry/curvature/feature_size.h"
 #include "geometry/mesh/mesh_stats.h"
 #include "geometry/surface_analysis.h"
+#include "geometry/view/default_view.h"
 
 #include <chrono>
 #include <cstdio>
@@ -59,7 +60,9 @@ int run_info(int argc, char** argv) {
     cli::Parser p("info", "[MESH] [options]",
                   "Print statistics of a mesh: counts, bounding box, edge lengths, connected\n"
                   "components, boundary edges and loops, non-manifold edges, degenerate faces,\n"
-                  "isolated vertices, Euler characteristic (V - E + F) and feature size.");
+                  "isolated vertices, Euler characteristic (V - E + F), the default view of\n"
+                  "kappa render (unit vectors from the model's centre towards the eye and up)\n"
+                  "and feature size.");
     p.positional("MESH", mesh_path, "mesh file (.ply .obj .off .stl .gltf .glb); default: the built-in model", false)
         .flag("--no-curvature", no_curvature, "skip the curvature estimate (no feature size; faster)")
         .flag("--timings", timings, "print the time of each step on stderr")
@@ -84,6 +87,11 @@ int run_info(int argc, char** argv) {
 
     print_line("mesh", mesh_display_name(mesh_path));
     print_stats(stats);
+    // What kappa render draws without --view/--eye/--up (docs/rendering.md,
+    // 'The default view'): --eye EYE --up UP from the centre gives it again.
+    const DefaultView view = default_view(mesh, file_up_axis(mesh_path));
+    print_line("default view", format("eye %.4f,%.4f,%.4f", view.eye.x, view.eye.y, view.eye.z) +
+                                   format(" up %.4f,%.4f,%.4f", view.up.x, view.up.y, view.up.z));
 
     double curvature_s = 0;
     if (!no_curvature) {

@@ -1,8 +1,17 @@
 // `kappa info` end to end: the printed counts against facts known
 // independently (mesh README, the default model's construction, V - E + F).
 #include "test_support.h"
+#include "test_upright_shapes.h"
+
+#include "geometry/io/mesh_io.h"
+#include "geometry/view/default_view.h"
+
+#include <glm/geometric.hpp>
 
 #include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <utility>
 
 #include <map>
 #include <algorithm>
@@ -130,4 +139,89 @@ TEST_CASE("kappa info rejects extra arguments", "[cli][info]") {
     CHECK(r.exit_code == 2);
     CHECK(count_lines(r.output) == 1);
     CHECK(r.output.find("unexpected argument 'b.ply'") != std::string::npos);
+}
+
+namespace {
+
+// The three numbers of "eye X,Y,Z up X,Y,Z" after `key`.
+glm::vec3 view_vector(const std::string& line, const std::string& key) {
+    const size_t at = line.find(key + " ");
+    REQUIRE(at != std::string::npos);
+    glm::vec3 v;
+    char comma1 = 0, comma2 = 0;
+    std::istringstream(line.substr(at + key.size() + 1)) >> v.x >> comma1 >> v.y >> comma2 >> v.z;
+    CHECK(comma1 == ',');
+    CHECK(comma2 == ',');
+    return v;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
+        if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
+        if (i + 2 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 2]));
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? table[v & 63] : '=';
+    }
+    return out;
+}
+
+// The mesh as a .gltf with an embedded buffer (float positions, uint32 indices).
+std::string gltf_of(const kappa::Mesh& m) {
+    const std::string pos(reinterpret_cast<const char*>(m.positions.data()), m.positions.size() * 12);
+    const std::string idx(reinterpret_cast<const char*>(m.faces.data()), m.faces.size() * 12);
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec3& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    char bounds[200];
+    std::snprintf(bounds, sizeof bounds, R"("min": [%.9g, %.9g, %.9g], "max": [%.9g, %.9g, %.9g])", lo.x, lo.y, lo.z,
+                  hi.x, hi.y, hi.z);
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}], )"
+           R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}], )"
+           R"("buffers": [{"byteLength": )" + std::to_string(pos.size() + idx.size()) +
+           R"(, "uri": "data:application/octet-stream;base64,)" + base64(pos + idx) + R"("}], )" +
+           R"("bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" + std::to_string(pos.size()) +
+           R"(}, {"buffer": 0, "byteOffset": )" + std::to_string(pos.size()) + R"(, "byteLength": )" +
+           std::to_string(idx.size()) + R"(}], "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": )" +
+           std::to_string(m.positions.size()) + ", " + bounds +
+           R"(}, {"bufferView": 1, "componentType": 5125, "type": "SCALAR", "count": )" +
+           std::to_string(3 * m.faces.size()) + "}]}";
+}
+
+}  // namespace
+
+TEST_CASE("kappa info prints the default view: the shape's up, or the glTF file's", "[cli][info]") {
+    using kappa::test::shared_mesh;
+    // Spot: y up, its view as the default view code chooses it.
+    {
+        const auto r = run_command(kExe + " info --no-curvature " + shared_mesh("spot.obj"));
+        REQUIRE(r.exit_code == 0);
+        const auto f = fields(r.output);
+        REQUIRE(f.count("default view"));
+        const glm::vec3 eye = view_vector(f.at("default view"), "eye"), up = view_vector(f.at("default view"), "up");
+        CHECK(glm::length(up - glm::vec3(0, 1, 0)) < 1e-4f);
+        const glm::vec3 expected = kappa::view_direction(kappa::choose_default_view(kappa::load_mesh(shared_mesh("spot.obj"))));
+        CHECK(glm::length(eye - expected) < 2e-4f);
+    }
+    // A bust standing on its base, z up: as an OFF file z up; as glTF (whose
+    // convention is +y) y up, seen from above the y axis.
+    const kappa::Mesh bust = kappa::test::bust_z_up();
+    const std::string off = kappa::test::temp_dir() + "/bust-z-up.off", gltf = kappa::test::temp_dir() + "/bust.gltf";
+    kappa::test::write_off(off, bust);
+    kappa::test::write_file(gltf, gltf_of(bust));
+    for (const auto& [path, true_up] : {std::pair{off, glm::vec3(0, 0, 1)}, std::pair{gltf, glm::vec3(0, 1, 0)}}) {
+        const auto r = run_command(kExe + " info --no-curvature " + path);
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+        const auto f = fields(r.output);
+        REQUIRE(f.count("default view"));
+        const glm::vec3 eye = view_vector(f.at("default view"), "eye"), up = view_vector(f.at("default view"), "up");
+        CHECK(glm::length(up - true_up) < 1e-4f);
+        CHECK(std::fabs(glm::length(eye) - 1) < 1e-3f);
+        CHECK(glm::dot(eye, up) > 0.3f);  // from above: elevation 20 or 35 degrees
+        CHECK(glm::dot(eye, up) < 0.6f);
+    }
 }
