@@ -11,6 +11,7 @@
 #include "geometry/view/default_view.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -90,8 +91,9 @@ int run_info(int argc, char** argv) {
     // What kappa render draws without --view/--eye/--up (docs/rendering.md,
     // 'The default view'): --eye EYE --up UP from the centre gives it again.
     const DefaultView view = default_view(mesh, file_up_axis(mesh_path));
-    print_line("default view", format("eye %.4f,%.4f,%.4f", view.eye.x, view.eye.y, view.eye.z) +
-                                   format(" up %.4f,%.4f,%.4f", view.up.x, view.up.y, view.up.z));
+    auto c = [](float v) { return std::fabs(v) < 5e-5f ? 0.0 : double(v); };  // no "-0.0000"
+    print_line("default view", format("eye %.4f,%.4f,%.4f", c(view.eye.x), c(view.eye.y), c(view.eye.z)) +
+                                   format(" up %.4f,%.4f,%.4f", c(view.up.x), c(view.up.y), c(view.up.z)));
 
     double curvature_s = 0;
     if (!no_curvature) {

@@ -85,11 +85,13 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b) {
 }
 
 render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
-                           glm::ivec2 size, glm::vec3* orbit_center, const DrawingUnits& units) {
+                           glm::ivec2 size, glm::vec3* orbit_center, const DrawingUnits& units,
+                           glm::vec3* up_axis) {
     CameraOptions c = options;
     c.eye = units.to_drawing(c.eye), c.target = units.to_drawing(c.target);
     const float aspect = float(size.x) / float(size.y);
     if (orbit_center) *orbit_center = bounds.center;
+    if (up_axis) *up_axis = c.has_up ? view_frame(c.up).up : glm::vec3(0, 1, 0);
     render::Camera camera;
     if (!c.xf_path.empty()) {
         camera.view = units.view_to_drawing(render::read_xf(c.xf_path));
@@ -101,9 +103,14 @@ render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const
     // the shape gives), framed with that axis up.
     if (!c.has_eye) {
         const std::optional<glm::vec3> up = c.has_up ? std::optional<glm::vec3>(c.up) : c.file_up;
-        camera = !c.view ? render::Camera::default_view(mesh, bounds, c.fov, aspect, up)
-                 : c.has_up ? render::Camera::framing(bounds, c.fov, aspect, view_direction(*c.view, c.up), c.up)
-                            : render::Camera::framing(bounds, c.fov, aspect, view_direction(*c.view));
+        if (!c.view) {
+            const DefaultView v = default_view(mesh, up);
+            if (up_axis) *up_axis = v.up;
+            camera = render::Camera::framing(bounds, c.fov, aspect, v.eye, v.up);  // = Camera::default_view
+        } else {
+            camera = c.has_up ? render::Camera::framing(bounds, c.fov, aspect, view_direction(*c.view, c.up), c.up)
+                              : render::Camera::framing(bounds, c.fov, aspect, view_direction(*c.view));
+        }
         // The default view with --up goes on as before the up axis counted
         // (a look_at from the framed eye: the same camera, to the last bit).
         if (!c.has_target && (c.view || !c.has_up)) return camera;

@@ -54,12 +54,17 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b);
 
 // The camera the options describe for `mesh` (bounds: its bounding sphere)
 // in an image of `size`: --xf, --view, --eye/--target/--up or the default
-// view. orbit_center (optional): where a turntable turns around. Throws
+// view. orbit_center (optional): where a turntable turns around. up_axis
+// (optional): the model's up axis the view stands on (--up, else the
+// default view's, else +y; model coordinates): the axis a turntable of the
+// default view or of --view should turn about (app/cmd_render.cpp still
+// turns those about +y). Throws
 // cli::UsageError for a degenerate eye/target/up and std::runtime_error
 // for an unreadable --xf file. mesh, bounds and the result are in drawing
 // units (geometry/mesh/drawing_units.h: MeshDrawing::units()); --eye, --target
 // and --xf, in model units, are converted.
 render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
-                           glm::ivec2 size, glm::vec3* orbit_center = nullptr, const DrawingUnits& units = {});
+                           glm::ivec2 size, glm::vec3* orbit_center = nullptr, const DrawingUnits& units = {},
+                           glm::vec3* up_axis = nullptr);
 
 }  // namespace kappa::app

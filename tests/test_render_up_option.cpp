@@ -40,12 +40,15 @@ TEST_CASE("kappa render: --view AZ,EL is taken about --up, and about +y without 
     app::CameraOptions o;
     o.view = ViewAngles{30, 20};
     // Without --up: about +y, y up in the image (as before --up took part).
-    Seen s = seen(app::make_camera(o, bust, b, {400, 300}), b);
+    glm::vec3 axis(0);
+    Seen s = seen(app::make_camera(o, bust, b, {400, 300}, nullptr, {}, &axis), b);
+    CHECK(near(axis, {0, 1, 0}));
     CHECK(near(s.eye, view_direction({30, 20})));
     CHECK(glm::dot(s.up, glm::vec3(0, 1, 0)) > 0.9f);
     // With --up 0,0,1: azimuth 0 from -y, 90 from +x; z up in the image.
     o.has_up = true, o.up = {0, 0, 2};
-    s = seen(app::make_camera(o, bust, b, {400, 300}), b);
+    s = seen(app::make_camera(o, bust, b, {400, 300}, nullptr, {}, &axis), b);
+    CHECK(near(axis, {0, 0, 1}));
     CHECK(near(s.eye, view_direction({30, 20}, {0, 0, 1})));
     CHECK(s.eye.y < 0);
     CHECK(s.eye.x > 0);
@@ -63,13 +66,16 @@ TEST_CASE("The default view stands on the shape's up axis, or on --up", "[render
     app::CameraOptions o;
     const DefaultView v = default_view(bust);
     REQUIRE(near(v.up, {0, 0, 1}));
-    Seen s = seen(app::make_camera(o, bust, b, {400, 300}), b);
+    glm::vec3 axis(0);
+    Seen s = seen(app::make_camera(o, bust, b, {400, 300}, nullptr, {}, &axis), b);
+    CHECK(near(axis, {0, 0, 1}));  // the axis a turntable of this view turns about
     CHECK(near(s.eye, v.eye));
     CHECK(glm::dot(s.up, v.up) > 0.8f);                      // z up in the image
     CHECK(std::fabs(glm::dot(glm::cross(s.up, s.eye), v.up)) < 1e-4f);  // no roll: image x level
     // --up 0,1,0 overrides it: the view about y, as before up detection.
     o.has_up = true, o.up = {0, 1, 0};
-    s = seen(app::make_camera(o, bust, b, {400, 300}), b);
+    s = seen(app::make_camera(o, bust, b, {400, 300}, nullptr, {}, &axis), b);
+    CHECK(near(axis, {0, 1, 0}));
     CHECK(near(s.eye, view_direction(choose_default_view(bust))));
     CHECK(glm::dot(s.up, glm::vec3(0, 1, 0)) > 0.8f);
     // --eye without --up: y up, as before.
