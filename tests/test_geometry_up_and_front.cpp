@@ -28,6 +28,12 @@ float degrees_between(glm::vec3 a, glm::vec3 b) {
     return glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)));
 }
 
+// Cosine between the eye's direction across the up axis and `front`.
+float towards(const DefaultView& v, glm::vec3 front) {
+    const glm::vec3 across = v.eye - glm::dot(v.eye, v.up) * v.up;
+    return glm::dot(glm::normalize(across), glm::normalize(front));
+}
+
 bool finite_unit(glm::vec3 v) { return std::isfinite(v.x + v.y + v.z) && std::fabs(glm::length(v) - 1) < 1e-4f; }
 
 }  // namespace
@@ -70,6 +76,7 @@ TEST_CASE("A bust scanned z up, on a flat base, is seen upright whichever axis i
     const float elevation = 90 - degrees_between(v.eye, v.up);
     CHECK(elevation > 15);
     CHECK(elevation < 40);
+    CHECK(towards(v, {0, -1, 0}) > 0.5f);  // from the face's side (the face looks towards -y)
     // Only z takes y's place, base down: the same bust with its base at the
     // low end of x, or at the high end of z (upside down, or a panel's flat
     // back), keeps +y.
@@ -79,11 +86,23 @@ TEST_CASE("A bust scanned z up, on a flat base, is seen upright whichever axis i
     CHECK(choose_up(mapped(bust, [](glm::vec3 p) { return glm::vec3(p.x, p.z, -p.y); })) == glm::vec3(0, 1, 0));
 }
 
-TEST_CASE("A head scanned y up stays y up", "[view]") {
+TEST_CASE("A head scanned y up stays y up and is seen from its face side, with or without hair", "[view]") {
     const Mesh head = head_y_up();
     const DefaultView v = default_view(head);
     CHECK(v.up == glm::vec3(0, 1, 0));
     CHECK(v.eye.y > 0);  // from above
+    // The face looks towards +z; turned about y, it still gets the view:
+    // within 50 degrees of the face (the never-from-behind rule's band).
+    for (const Mesh& m : {head, head_with_hair_y_up()})
+        for (float deg : {0.0f, 30.0f, 100.0f, 180.0f, 250.0f}) {
+            const float a = glm::radians(deg), c = std::cos(a), s = std::sin(a);
+            const Mesh turned = mapped(m, [&](glm::vec3 p) { return glm::vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z); });
+            const DefaultView t = default_view(turned);
+            INFO("turned by " << deg << " degrees, " << m.face_count() << " faces: eye " << t.eye.x << "," << t.eye.y
+                              << "," << t.eye.z);
+            CHECK(t.up == glm::vec3(0, 1, 0));
+            CHECK(towards(t, {s, 0, c}) >= std::cos(glm::radians(50.0f)) - 1e-4f);
+        }
     // The same head z up (neck at -z): upright.
     const Mesh z_up = mapped(head, [](glm::vec3 p) { return glm::vec3(p.x, -p.z, p.y); });
     CHECK(degrees_between(choose_up(z_up), {0, 0, 1}) < 3);

@@ -45,6 +45,28 @@ inline Mesh head_y_up() {
     return m;
 }
 
+// The same head with hair: curls (small balls, in mirror pairs) over the
+// back and top of the skull, more curved than the face.
+inline Mesh head_with_hair_y_up() {
+    Mesh m = ellipsoid_at({0, 0, -0.35f}, {0.14f, 0.14f, 0.2f}, -0.45f);  // neck
+    append(m, ellipsoid_at({0, 0, 0.1f}, {0.3f, 0.36f, 0.42f}));
+    append(m, ellipsoid_at({0, -0.37f, 0.05f}, {0.05f, 0.08f, 0.1f}));  // nose at -y
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 5; ++j) {
+            // Directions over the back (+y) and top of the head, mirrored in x.
+            const float u = 0.15f + 0.25f * float(i), v = 0.2f + 0.3f * float(j);  // radians
+            const glm::vec3 d(std::sin(u) * std::cos(v), std::cos(u) * std::cos(v) * 0.8f + 0.2f, std::sin(v));
+            for (float side : {1.0f, -1.0f}) {
+                const glm::vec3 at = glm::vec3(0, 0, 0.1f) + glm::vec3(side * 0.3f * d.x, 0.36f * d.y, 0.42f * d.z);
+                Mesh curl = make_icosphere(0.05f, 2);
+                for (glm::vec3& p : curl.positions) p += at;
+                append(m, curl);
+            }
+        }
+    for (glm::vec3& p : m.positions) p = {p.x, p.z, -p.y};  // z up -> y up, -y -> +z
+    return m;
+}
+
 // A standing figure, z up: legs with flat soles at z = 0.1, a torso, arms
 // and a round head; no flat base to speak of, but a clear long axis.
 inline Mesh figure_z_up() {

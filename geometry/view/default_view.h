@@ -25,7 +25,12 @@
 // moments have a clear long axis (ratio >= 1.5) and the top fifth of the
 // model by height lies towards one end of it (centroid >= 0.2 of the
 // half-length off the whole's), that end is the front. A cube, a vase, a
-// part with a level top have none. Large meshes are sampled:
+// part with a level top have none. A model without such a front that is
+// mirror-symmetric about a vertical plane, one end of the plane's
+// horizontal direction pointed and the other round (a nose and the back of
+// a skull: heads, busts), has its face at the pointed end (front_of_face in
+// default_view.cpp) and is seen from within 50 degrees of it, whatever the
+// score says (hair is more curved than a face). Large meshes are sampled:
 // every ceil(F / 200000)-th face, so the choice is deterministic.
 //
 // Up: +y (the convention of most mesh formats and of glTF) unless the shape
