@@ -144,6 +144,7 @@ private:
         add_render_options(p, o);
         parse_options(job, p);
         finish_render_options(p, o);
+        o.camera.file_up = file_up_axis(path_);  // glTF: +y
         if (render::image_format_for(job.output) == render::ImageFormat::Jpeg && o.settings.background.a < 1.0f)
             throw std::runtime_error("JPEG has no transparency (use .png, or an opaque --background)");
         if (mesh_->face_count() == 0)

@@ -92,6 +92,7 @@ int run_render(int argc, char** argv) {
         return 1;
     }
     finish_render_options(p, options);
+    options.camera.file_up = file_up_axis(mesh_path);  // glTF: +y
     const glm::ivec2 size = options.size;
 
     try {
@@ -108,7 +109,9 @@ int run_render(int argc, char** argv) {
         const double load_s = seconds_since(t_load) - drawing.times().total() - drawing.scale_seconds();
 
         glm::vec3 orbit_center;
-        const render::Camera camera = make_camera(options.camera, mesh, drawing.bounds(), size, &orbit_center, drawing.units());
+        glm::vec3 up_axis(0, 1, 0);
+        const render::Camera camera =
+            make_camera(options.camera, mesh, drawing.bounds(), size, &orbit_center, drawing.units(), &up_axis);
 
         const auto t_context = Clock::now();
         std::unique_ptr<render::HeadlessContext> context;
@@ -137,12 +140,12 @@ int run_render(int argc, char** argv) {
             std::printf("  %s (context + shaders %.3f s)\n", context->description().c_str(), context_s);
         }
 
-        // The turntable turns around the model's y axis (the up of the default
-        // view and of --view) through the centre; with --xf or --up, around
-        // the camera's own up axis through the target.
+        // The turntable turns around the model's up axis (the one the default
+        // view or --view stands on: +y, or the shape's, geometry/view/default_view.h)
+        // through the centre; with --xf or --up, around the camera's own up axis
+        // through the target.
         const bool own_up = !options.camera.xf_path.empty() || options.camera.has_up;
-        const glm::vec3 axis =
-            own_up ? glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 1, 0, 0)) : glm::vec3(0, 1, 0);
+        const glm::vec3 axis = own_up ? glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 1, 0, 0)) : up_axis;
         const int views = std::max(turntable, 1);
         for (int i = 0; i < views; ++i) {
             const render::Camera view =

@@ -57,8 +57,7 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b);
 // view. orbit_center (optional): where a turntable turns around. up_axis
 // (optional): the model's up axis the view stands on (--up, else the
 // default view's, else +y; model coordinates): the axis a turntable of the
-// default view or of --view should turn about (app/cmd_render.cpp still
-// turns those about +y). Throws
+// default view or of --view turns about (app/cmd_render.cpp). Throws
 // cli::UsageError for a degenerate eye/target/up and std::runtime_error
 // for an unreadable --xf file. mesh, bounds and the result are in drawing
 // units (geometry/mesh/drawing_units.h: MeshDrawing::units()); --eye, --target

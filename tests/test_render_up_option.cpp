@@ -83,3 +83,59 @@ TEST_CASE("The default view stands on the shape's up axis, or on --up", "[render
     s = seen(app::make_camera(o, bust, b, {400, 300}), b);
     CHECK(glm::dot(s.up, glm::vec3(0, 1, 0)) > 0.1f);
 }
+
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
+#include "test_render_fixtures.h"
+#include "test_support.h"
+
+#include <cstdio>
+#include <fstream>
+
+TEST_CASE("A turntable of a z-up bust turns about its up axis, as kappa info reports it", "[render][cli][turntable]") {
+    // The bust stands on a flat base at z = 0, so its default view stands on
+    // +z (kappa info: "default view: eye X,Y,Z up X,Y,Z"). Frame i of
+    // --turntable 4 must be that view turned by 90 i degrees about that up
+    // (drawn with --view AZ,EL --up), not turned about +y (it would tumble).
+    const Mesh bust = test::bust_z_up();
+    const std::string dir = test::temp_dir(), obj_path = dir + "/bust.obj";
+    {
+        std::ofstream obj(obj_path);
+        for (const glm::vec3& p : bust.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+        for (const Face& f : bust.faces) obj << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
+    }
+    const auto info = test::run_command(std::string(KAPPA_EXE) + " info " + obj_path + " --no-curvature");
+    INFO(info.output);
+    REQUIRE(info.exit_code == 0);
+    glm::vec3 eye, up;
+    const size_t at = info.output.find("default view:");
+    REQUIRE(at != std::string::npos);
+    REQUIRE(std::sscanf(info.output.c_str() + at, "default view: eye %f,%f,%f up %f,%f,%f", &eye.x, &eye.y, &eye.z,
+                        &up.x, &up.y, &up.z) == 6);
+    CHECK(up.z > 0.99f);
+    const std::string common = " -q --size 200x200 --shading none --lines contours --msaa off";
+    const auto r = test::run_command(test::kappa_render(obj_path + common + " --turntable 4 -o " + dir + "/t.png"));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    // The default view's angles about that up (--view AZ,EL --up U draws the same camera).
+    const float el = glm::degrees(std::asin(glm::clamp(glm::dot(eye, up), -1.0f, 1.0f)));
+    float az = 0, best = 1e9f;
+    for (float a = -180; a < 180; a += 0.05f) {
+        const float miss = glm::length(view_direction({a, el}, up) - eye);
+        if (miss < best) best = miss, az = a;
+    }
+    REQUIRE(best < 1e-3f);
+    for (int i = 1; i < 4; ++i) {
+        const std::string single = dir + "/v" + std::to_string(i) + ".png";
+        REQUIRE(test::run_command(test::kappa_render(obj_path + common + " --view " + std::to_string(az + 90.0f * i) +
+                                                     "," + std::to_string(el) + " --up 0,0,1 -o " + single))
+                    .exit_code == 0);
+        const render::Image frame = render::read_png(dir + "/t-00" + std::to_string(i) + ".png");
+        const render::Image expected = render::read_png(single);
+        const double near = render::ink_within(frame, expected, 1.0f), back = render::ink_within(expected, frame, 1.0f);
+        INFO("frame " << i << ": ink within 1 px of the turned view " << near << ", back " << back);
+        CHECK(test::count_ink(frame) > 200);
+        CHECK(near > 0.97);
+        CHECK(back > 0.97);
+    }
+}
