@@ -226,8 +226,8 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             Mesh input = app::load_mesh_or_default(request.path);
             app::prepare_for_drawing(input);
             m.input_vertices = input.vertex_count();
-            const std::vector<glm::uvec2> creases =
-                find_creases(input, render::resolved_crease_angle(request.crease_angle, input));
+            // The angle (auto or given) and the creases from one look at the edges, as kappa render.
+            const std::vector<glm::uvec2> creases = resolve_creases(input, request.crease_angle).creases;
             SplitMesh split = split_at_creases(std::move(input), creases);
             m.crease_points = render::crease_end_points(split);
             m.mesh = std::make_shared<const Mesh>(std::move(split.mesh));
