@@ -244,7 +244,8 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
         set_stage("feature size");
         if (fields->has_curvature()) m.feature_size = feature_size(*m.mesh, *fields);
         set_stage("default view");
-        m.view_direction = view_direction(choose_default_view(*m.mesh));
+        const DefaultView view = default_view(*m.mesh, file_up_axis(request.path));  // as kappa render's
+        m.view_direction = view.eye, m.view_up = view.up;
         set_stage("scale space");
         m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields));
         m.fields_s = seconds_since(t);

@@ -39,6 +39,7 @@ struct Model {
     // first view (fitting its levels as zooming needs them).
     std::shared_ptr<render::DetailSource> detail;
     glm::vec3 view_direction{0, 0, 1};  // of the default view (geometry/view/default_view.h)
+    glm::vec3 view_up{0, 1, 0};         // the up axis it stands on
     std::vector<glm::vec3> crease_points;  // the crease pass's data (render/fields/field_upload.h); `mesh` is split there
     size_t input_vertices = 0;             // before the split
     SmoothingOptions smoothing;

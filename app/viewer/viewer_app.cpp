@@ -158,7 +158,7 @@ void ViewerApp::adopt_results() {
         if (have_view_)
             orbit_.set_pivot(bounds.center);
         else
-            orbit_.reset(bounds, drawing_area().size, model_->view_direction);
+            orbit_.reset(bounds, drawing_area().size, model_->view_direction, model_->view_up);
         have_view_ = false;  // a view file applies to the first mesh only
         window_->set_title("kappa - " + (model_->path.empty() ? std::string("built-in model") : model_->path));
         panel_.open_path = model_->path;

@@ -124,7 +124,7 @@ void ViewerApp::apply(Action action, const char* line) {
         if (renderer_->mesh()) orbit_.fit(renderer_->mesh()->bounds(), drawing_area().size);
         break;
     case Action::ResetView:
-        if (renderer_->mesh() && model_) orbit_.reset(renderer_->mesh()->bounds(), drawing_area().size, model_->view_direction);
+        if (renderer_->mesh() && model_) orbit_.reset(renderer_->mesh()->bounds(), drawing_area().size, model_->view_direction, model_->view_up);
         break;
     case Action::TogglePanel: panel_.visible = !panel_.visible; break;
     case Action::ToggleHelp: panel_.help = !panel_.help; break;

@@ -37,9 +37,9 @@ glm::mat4 reorthonormalize(const glm::mat4& m, float scale) {
 
 }  // namespace
 
-void OrbitCamera::reset(const BoundingSphere& bounds, glm::vec2 viewport, glm::vec3 direction) {
+void OrbitCamera::reset(const BoundingSphere& bounds, glm::vec2 viewport, glm::vec3 direction, glm::vec3 up) {
     view_ = Camera::framing(bounds, rtsc_fov_y_deg(int(viewport.x), int(viewport.y)), viewport.x / viewport.y,
-                            direction)
+                            direction, up)
                 .view;
     pivot_ = bounds.center;
     scale_ = 1;

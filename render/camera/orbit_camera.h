@@ -21,7 +21,9 @@ class OrbitCamera {
 public:
     // Frames `bounds` from `direction` (centre towards the eye; Camera::framing)
     // and orbits about its centre.
-    void reset(const BoundingSphere& bounds, glm::vec2 viewport, glm::vec3 direction = glm::vec3(0, 0, 1));
+    // up: the model's up axis, up in the image (geometry/view/default_view.h).
+    void reset(const BoundingSphere& bounds, glm::vec2 viewport, glm::vec3 direction = glm::vec3(0, 0, 1),
+               glm::vec3 up = glm::vec3(0, 1, 0));
     // Frames `bounds` again from the current viewing direction.
     void fit(const BoundingSphere& bounds, glm::vec2 viewport);
     // Continues from a given model-view matrix (e.g. a .xf file).
