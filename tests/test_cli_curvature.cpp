@@ -1,4 +1,5 @@
 // `kappa curvature` end to end: the real executable, real files.
+#include "test_shapes.h"
 #include "test_support.h"
 
 #include "geometry/io/mesh_io.h"
@@ -20,13 +21,7 @@ namespace {
 
 const std::string kExe = KAPPA_EXE;
 
-void write_off(const std::string& path, const Mesh& m) {
-    std::ofstream f(path);
-    f.precision(9);
-    f << "OFF\n" << m.positions.size() << " " << m.faces.size() << " 0\n";
-    for (const auto& p : m.positions) f << p.x << " " << p.y << " " << p.z << "\n";
-    for (const auto& t : m.faces) f << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-}
+using kappa::test::write_off;
 
 std::vector<std::vector<double>> read_csv_rows(const std::string& path, std::string& header) {
     std::ifstream f(path);

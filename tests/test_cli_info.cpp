@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 
+using kappa::test::base64;
 using kappa::test::count_lines;
 using kappa::test::run_command;
 
@@ -153,21 +154,6 @@ glm::vec3 view_vector(const std::string& line, const std::string& key) {
     CHECK(comma1 == ',');
     CHECK(comma2 == ',');
     return v;
-}
-
-std::string base64(const std::string& bytes) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
-        if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
-        if (i + 2 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 2]));
-        out += table[(v >> 18) & 63];
-        out += table[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? table[v & 63] : '=';
-    }
-    return out;
 }
 
 // The mesh as a .gltf with an embedded buffer (float positions, uint32 indices).

@@ -33,15 +33,6 @@
 using namespace kappa;
 
 namespace {
-
-// Pixels whose colour differs by more than a quarter of full ink in a channel.
-size_t differing_pixels(const render::Image& a, const render::Image& b) {
-    size_t n = 0;
-    auto far = [&](size_t i) { return std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 64; };
-    for (size_t i = 0; i < a.pixels.size(); i += 4) n += far(i) || far(i + 1) || far(i + 2);
-    return n;
-}
-
 // Every line family the compute path extracts, one selection each: the
 // per-triangle ones, and the per-edge ones the mesh has (fandisk's creases,
 // bunny's boundaries, with contours: ink on both paths).
@@ -117,7 +108,7 @@ TEST_CASE("compute-shader and geometry-shader extraction draw the same pixels", 
                 s.hidden_lines = hidden;
                 const render::Image gs = draw(t, s, render::LineExtraction::Gpu);
                 const render::Image cs = draw(t, s, render::LineExtraction::Compute);
-                const size_t ink = test::count_ink(gs), differ = differing_pixels(gs, cs);
+                const size_t ink = test::count_ink(gs), differ = test::differing_pixels(gs, cs);
                 INFO(ink << " ink pixels, " << differ << " pixels differ");
                 CHECK(ink > 200);
                 CHECK(double(differ) <= 0.001 * double(ink));
@@ -136,7 +127,7 @@ TEST_CASE("compute-shader and CPU extraction draw the same image within the merg
             const render::RenderSettings s = test::lines_only(lines);
             const render::Image cs = draw(t, s, render::LineExtraction::Compute);
             const render::Image cpu = draw(t, s, render::LineExtraction::Cpu);
-            const size_t ink = test::count_ink(cs), differ = differing_pixels(cs, cpu);
+            const size_t ink = test::count_ink(cs), differ = test::differing_pixels(cs, cpu);
             INFO(ink << " ink pixels, " << differ << " pixels differ");
             CHECK(ink > 200);
             CHECK(double(differ) < 0.02 * double(ink));

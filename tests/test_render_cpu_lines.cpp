@@ -23,18 +23,6 @@
 
 using namespace kappa;
 
-namespace {
-
-// Pixels whose colour differs by more than a quarter of full ink in a channel.
-size_t differing_pixels(const render::Image& a, const render::Image& b) {
-    size_t n = 0;
-    auto far = [&](size_t i) { return std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 64; };
-    for (size_t i = 0; i < a.pixels.size(); i += 4) n += far(i) || far(i + 1) || far(i + 2);
-    return n;
-}
-
-}  // namespace
-
 TEST_CASE("CPU and geometry-shader extraction of lines draw the same image", "[render][cpu-lines]") {
     for (const std::string& name : {std::string(), std::string("bunny.ply")}) {
         const Mesh mesh = name.empty() ? make_default_model() : load_mesh(test::shared_mesh(name));
@@ -61,7 +49,7 @@ TEST_CASE("CPU and geometry-shader extraction of lines draw the same image", "[r
             const render::Image gpu = test::render(mesh, fields, fs, camera, s, 640, 480);
             s.line_extraction = render::LineExtraction::Cpu;
             const render::Image cpu = test::render(mesh, fields, fs, camera, s, 640, 480);
-            const size_t ink = test::count_ink(gpu), differ = differing_pixels(gpu, cpu);
+            const size_t ink = test::count_ink(gpu), differ = test::differing_pixels(gpu, cpu);
             INFO(ink << " ink pixels, " << differ << " pixels differ");
             CHECK(ink > 200);
             CHECK(double(differ) < 0.02 * double(ink));
@@ -139,7 +127,7 @@ TEST_CASE("the CPU line pass draws open boundaries as the GL pass does", "[rende
         const size_t ink = test::count_ink(gpu);
         INFO((mesh == &grid ? "grid" : "bunny") << ": " << ink << " ink pixels, CPU " << test::count_ink(cpu));
         CHECK(ink > (mesh == &grid ? 1000u : 100u));
-        CHECK(double(differing_pixels(gpu, cpu)) < 0.02 * double(ink));
+        CHECK(double(test::differing_pixels(gpu, cpu)) < 0.02 * double(ink));
         CHECK(render::ink_within(gpu, cpu, 1.0f) > 0.995);
         CHECK(render::ink_within(cpu, gpu, 1.0f) > 0.995);
     }

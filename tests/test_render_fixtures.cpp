@@ -116,6 +116,13 @@ bool is_ink(const render::Rgba& c) { return render::is_ink(c); }
 
 size_t count_ink(const render::Image& image) { return render::count_ink(image); }
 
+size_t differing_pixels(const render::Image& a, const render::Image& b) {
+    size_t n = 0;
+    auto far = [&](size_t i) { return std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 64; };
+    for (size_t i = 0; i < a.pixels.size(); i += 4) n += far(i) || far(i + 1) || far(i + 2);
+    return n;
+}
+
 int largest_difference(const render::Image& a, const render::Image& b) {
     int largest = a.pixels.size() == b.pixels.size() ? 0 : 255;
     for (size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i)

@@ -42,6 +42,8 @@ render::RenderSettings lines_only(render::LineSelection lines);
 render::Image render(const Mesh& mesh, const SurfaceFields& fields, float fs, const render::Camera& camera,
                      const render::RenderSettings& settings, int width = 256, int height = 256);
 
+// Pixels whose colour differs by more than a quarter of full ink (64 of 255) in a channel.
+size_t differing_pixels(const render::Image& a, const render::Image& b);
 // The largest difference of any channel of two images of one size (0..255).
 int largest_difference(const render::Image& a, const render::Image& b);
 // What merging line segments on screen (render/lines/screen_merge.h: within 0.2 px

@@ -4,16 +4,22 @@
 #include "app/render_options.h"
 #include "geometry/view/default_view.h"
 #include "render/camera/camera.h"
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "test_render_fixtures.h"
+#include "test_shapes.h"
+#include "test_support.h"
 #include "test_upright_shapes.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace kappa;
 
@@ -84,13 +90,6 @@ TEST_CASE("The default view stands on the shape's up axis, or on --up", "[render
     CHECK(glm::dot(s.up, glm::vec3(0, 1, 0)) > 0.1f);
 }
 
-#include "render/image/ink_agreement.h"
-#include "render/image/png_writer.h"
-#include "test_render_fixtures.h"
-#include "test_support.h"
-
-#include <cstdio>
-#include <fstream>
 
 TEST_CASE("A turntable of a z-up bust turns about its up axis, as kappa info reports it", "[render][cli][turntable]") {
     // The bust stands on a flat base at z = 0, so its default view stands on
@@ -98,13 +97,9 @@ TEST_CASE("A turntable of a z-up bust turns about its up axis, as kappa info rep
     // --turntable 4 must be that view turned by 90 i degrees about that up
     // (drawn with --view AZ,EL --up), not turned about +y (it would tumble).
     const Mesh bust = test::bust_z_up();
-    const std::string dir = test::temp_dir(), obj_path = dir + "/bust.obj";
-    {
-        std::ofstream obj(obj_path);
-        for (const glm::vec3& p : bust.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-        for (const Face& f : bust.faces) obj << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
-    }
-    const auto info = test::run_command(std::string(KAPPA_EXE) + " info " + obj_path + " --no-curvature");
+    const std::string dir = test::temp_dir(), mesh_path = dir + "/bust.off";
+    test::write_off(mesh_path, bust);
+    const auto info = test::run_command(std::string(KAPPA_EXE) + " info " + mesh_path + " --no-curvature");
     INFO(info.output);
     REQUIRE(info.exit_code == 0);
     glm::vec3 eye, up;
@@ -114,7 +109,7 @@ TEST_CASE("A turntable of a z-up bust turns about its up axis, as kappa info rep
                         &up.x, &up.y, &up.z) == 6);
     CHECK(up.z > 0.99f);
     const std::string common = " -q --size 200x200 --shading none --lines contours --msaa off";
-    const auto r = test::run_command(test::kappa_render(obj_path + common + " --turntable 4 -o " + dir + "/t.png"));
+    const auto r = test::run_command(test::kappa_render(mesh_path + common + " --turntable 4 -o " + dir + "/t.png"));
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     // The default view's angles about that up (--view AZ,EL --up U draws the same camera).
@@ -127,7 +122,7 @@ TEST_CASE("A turntable of a z-up bust turns about its up axis, as kappa info rep
     REQUIRE(best < 1e-3f);
     for (int i = 1; i < 4; ++i) {
         const std::string single = dir + "/v" + std::to_string(i) + ".png";
-        REQUIRE(test::run_command(test::kappa_render(obj_path + common + " --view " + std::to_string(az + 90.0f * i) +
+        REQUIRE(test::run_command(test::kappa_render(mesh_path + common + " --view " + std::to_string(az + 90.0f * i) +
                                                      "," + std::to_string(el) + " --up 0,0,1 -o " + single))
                     .exit_code == 0);
         const render::Image frame = render::read_png(dir + "/t-00" + std::to_string(i) + ".png");

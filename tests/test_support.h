@@ -35,5 +35,7 @@ CommandResult run_under_xvfb(const std::string& command);
 // Writes text (or bytes) to a file, creating or truncating it.
 void write_file(const std::string& path, const std::string& contents);
 std::string read_file(const std::string& path);
+// Standard base64 (RFC 4648, with padding), for data: URIs in test glTF files.
+std::string base64(const std::string& bytes);
 
 }  // namespace kappa::test

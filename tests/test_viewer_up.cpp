@@ -4,26 +4,22 @@
 #include <catch2/catch.hpp>
 
 #include "render/camera/camera.h"
+#include "test_shapes.h"
 #include "test_support.h"
 #include "test_upright_shapes.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include <fstream>
 
 using namespace kappa;
 
 TEST_CASE("kappa view opens a z-up bust upright, on the up axis kappa render uses", "[viewer][window]") {
     const Mesh bust = test::bust_z_up();
     const std::string dir = test::temp_dir();
-    {
-        std::ofstream obj(dir + "/bust.obj");
-        for (const glm::vec3& p : bust.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-        for (const Face& f : bust.faces) obj << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
-    }
+    test::write_off(dir + "/bust.off", bust);
     test::write_file(dir + "/steps.txt", "frames 2\nsave-view " + dir + "/start.xf\n");
-    const auto run = test::run_under_xvfb(std::string(KAPPA_EXE) + " view " + dir + "/bust.obj --size 400x300 --script " +
+    const auto run = test::run_under_xvfb(std::string(KAPPA_EXE) + " view " + dir + "/bust.off --size 400x300 --script " +
                                           dir + "/steps.txt");
     INFO(run.output);
     REQUIRE(run.exit_code == 0);

@@ -32,6 +32,25 @@ std::array<glm::vec3, kBins> bin_directions() {
     return dirs;
 }
 
+// Face centroids weighted by area, every step-th face (those with a finite
+// centroid and a positive area): the samples of the front tests below.
+struct FaceSample {
+    glm::vec3 p;
+    double w;
+};
+std::vector<FaceSample> face_samples(const Mesh& mesh, size_t step) {
+    std::vector<FaceSample> samples;
+    for (size_t f = 0; f < mesh.face_count(); f += step) {
+        const Face& t = mesh.faces[f];
+        const glm::vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+        const double w = 0.5 * glm::length(glm::cross(b - a, c - a));
+        const glm::vec3 p = (a + b + c) / 3.0f;
+        if (!(w > 0) || !std::isfinite(w) || !std::isfinite(p.x + p.y + p.z)) continue;
+        samples.push_back({p, w});
+    }
+    return samples;
+}
+
 // Animals, figures and vehicles are longer than wide and carry their tallest
 // parts at their front end: a head, horns, ears, a cab. The surface is
 // sampled by face centroids weighted by area (every step-th face). Its long
@@ -47,12 +66,9 @@ glm::vec2 front_of_upright_model(const Mesh& mesh, size_t step) {
     float y_min = INFINITY, y_max = -INFINITY;
     glm::dvec2 centroid(0);
     double total = 0;
-    for (size_t f = 0; f < mesh.face_count(); f += step) {
-        const Face& t = mesh.faces[f];
-        const glm::vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
-        const double w = 0.5 * glm::length(glm::cross(b - a, c - a));
-        const glm::vec3 p = (a + b + c) / 3.0f;
-        if (!(w > 0) || !std::isfinite(w) || !std::isfinite(p.x + p.y + p.z)) continue;
+    for (const FaceSample& fs : face_samples(mesh, step)) {
+        const glm::vec3 p = fs.p;
+        const double w = fs.w;
         samples.push_back({glm::dvec2(p.x, p.z), p.y, w});
         y_min = std::min(y_min, p.y), y_max = std::max(y_max, p.y);
         centroid += w * glm::dvec2(p.x, p.z), total += w;
@@ -137,20 +153,14 @@ UpEvidence up_evidence(const Mesh& mesh, size_t step) {
 // most a third of the other's bluntness, the most symmetric: its pointed
 // end is the face. Returns the unit xz direction towards it, else 0.
 glm::vec2 front_of_face(const Mesh& mesh, size_t step) {
-    struct Sample { glm::vec3 p; double w; };
-    std::vector<Sample> samples;
+    using Sample = FaceSample;
+    const std::vector<Sample> samples = face_samples(mesh, step);
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     glm::dvec3 centroid(0);
     double total = 0;
-    for (size_t f = 0; f < mesh.face_count(); f += step) {
-        const Face& t = mesh.faces[f];
-        const glm::vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
-        const double w = 0.5 * glm::length(glm::cross(b - a, c - a));
-        const glm::vec3 p = (a + b + c) / 3.0f;
-        if (!(w > 0) || !std::isfinite(w) || !std::isfinite(p.x + p.y + p.z)) continue;
-        samples.push_back({p, w});
-        lo = glm::min(lo, p), hi = glm::max(hi, p);
-        centroid += w * glm::dvec3(p), total += w;
+    for (const Sample& s : samples) {
+        lo = glm::min(lo, s.p), hi = glm::max(hi, s.p);
+        centroid += s.w * glm::dvec3(s.p), total += s.w;
     }
     if (!(total > 0)) return glm::vec2(0);
     centroid /= total;

@@ -22,6 +22,14 @@ void multisampled_storage(GLuint renderbuffer, GLenum internal_format, int sampl
 
 }  // namespace
 
+void set_hatching_uniforms(ShaderProgram& p, const RenderSettings& s) {
+    // Hatching enum order: none, min (along d2), max (along d1), cross; the shader's: none, d1, d2, both.
+    const int family[] = {0, 2, 1, 3};
+    p.set("u_hatching", family[int(s.hatching)]);
+    p.set("u_hatch_spacing", s.hatch_spacing);
+    p.set("u_hatch_width", s.hatch_stroke_width);
+}
+
 ShaderHatchingPass::ShaderHatchingPass()
     : strokes_({{GL_VERTEX_SHADER, {"common/fullscreen_vert.glsl"}},
                 {GL_FRAGMENT_SHADER, {"hatching/shader_hatching.glsl", "hatching/hatch_strokes_frag.glsl"}}}) {
@@ -100,11 +108,7 @@ void ShaderHatchingPass::draw(const FrameParams& frame, const RenderSettings& s,
     glBindFramebuffer(GL_FRAMEBUFFER, coverage_framebuffer);
     glViewport(0, 0, int(frame.viewport.x), int(frame.viewport.y));
     strokes_.use();
-    // Hatching enum order: none, min (along d2), max (along d1), cross; the shader's: none, d1, d2, both.
-    const int family[] = {0, 2, 1, 3};
-    strokes_.set("u_hatching", family[int(s.hatching)]);
-    strokes_.set("u_hatch_spacing", s.hatch_spacing);
-    strokes_.set("u_hatch_width", s.hatch_stroke_width);
+    set_hatching_uniforms(strokes_, s);
     strokes_.set("u_directions", 0);
     strokes_.set("u_darkness", 1);
     glActiveTexture(GL_TEXTURE1);

@@ -23,6 +23,11 @@
 
 namespace kappa::render {
 
+// The uniforms of shaders/hatching/shader_hatching.glsl (which families,
+// spacing, stroke width) for the program in use: the stroke pass's here, or
+// the surface pass's when it draws the strokes itself.
+void set_hatching_uniforms(ShaderProgram& program, const RenderSettings& settings);
+
 class ShaderHatchingPass {
 public:
     ShaderHatchingPass();  // compiles the shaders (GL context current)

@@ -1,5 +1,6 @@
 #include "render/surface/surface_renderer.h"
 
+#include "render/hatching/shader_hatching.h"
 #include "render/surface/back_face_culling.h"
 
 namespace kappa::render {
@@ -8,22 +9,28 @@ bool surface_is_background(const RenderSettings& s) {
     return s.shading == Shading::None && s.colormap == ColorMap::None && s.background == glm::vec4(1.0f);
 }
 
+namespace {
+
+// The surface's vertex stage with the window directions the shader hatching needs.
+ShaderStage hatched_vertex_stage() {
+    return {GL_VERTEX_SHADER,
+            {"common/mesh_attributes.glsl", "common/colormap.glsl", "hatching/window_directions.glsl",
+             "surface/surface_vert.glsl"},
+            "#define KAPPA_HATCHING\n"};
+}
+
+}  // namespace
+
 SurfaceRenderer::SurfaceRenderer()
     : program_({{GL_VERTEX_SHADER, {"common/mesh_attributes.glsl", "common/colormap.glsl", "surface/surface_vert.glsl"}},
                 {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "surface/surface_frag.glsl"}}}),
       plain_({{GL_VERTEX_SHADER, {"surface/surface_plain_vert.glsl"}},
               {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "surface/surface_frag.glsl"}}}),
       paper_({{GL_VERTEX_SHADER, {"surface/surface_paper_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"surface/surface_paper_frag.glsl"}}}),
-      hatched_({{GL_VERTEX_SHADER,
-                 {"common/mesh_attributes.glsl", "common/colormap.glsl", "hatching/window_directions.glsl",
-                  "surface/surface_vert.glsl"},
-                 "#define KAPPA_HATCHING\n"},
+      hatched_({hatched_vertex_stage(),
                 {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "hatching/shader_hatching.glsl", "surface/surface_frag.glsl"},
                  "#define KAPPA_HATCHING\n"}}),
-      hatch_targets_({{GL_VERTEX_SHADER,
-                       {"common/mesh_attributes.glsl", "common/colormap.glsl", "hatching/window_directions.glsl",
-                        "surface/surface_vert.glsl"},
-                       "#define KAPPA_HATCHING\n"},
+      hatch_targets_({hatched_vertex_stage(),
                       {GL_FRAGMENT_SHADER, {"common/colormap.glsl", "surface/surface_frag.glsl"},
                        "#define KAPPA_HATCHING\n#define KAPPA_HATCH_TARGETS\n"}}) {}
 
@@ -52,11 +59,7 @@ void SurfaceRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         p.set("u_map_range", mesh.map_range(s.colormap));
     }
     if (hatched) {
-        // Hatching enum order: none, min (along d2), max (along d1), cross; the shader's: none, d1, d2, both.
-        const int family[] = {0, 2, 1, 3};
-        p.set("u_hatching", family[int(s.hatching)]);
-        p.set("u_hatch_spacing", s.hatch_spacing);
-        p.set("u_hatch_width", s.hatch_stroke_width);
+        set_hatching_uniforms(p, s);
         p.set("u_line_color", s.line_color);
         p.set("u_viewport", frame.viewport);
         p.set("u_feature_size", mesh.feature_size());
