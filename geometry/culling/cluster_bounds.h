@@ -33,9 +33,13 @@ struct ClusterBounds {
 // and the "all directions" cone (never culled).
 //
 // Input:  mesh, vertex_normals (size V), clusters from cluster_faces(mesh).
-// Output: one ClusterBounds per cluster. O(F), single-threaded.
+// Output: one ClusterBounds per cluster. O(F), clusters in parallel.
 std::vector<ClusterBounds> compute_cluster_bounds(const Mesh& mesh, const std::vector<glm::vec3>& vertex_normals,
                                                   const FaceClusters& clusters);
+// The same for several sets of vertex normals at once (one result per set, in
+// order): the clusters' vertices, face normals and spheres are found once.
+std::vector<std::vector<ClusterBounds>> compute_cluster_bounds_for_sets(
+    const Mesh& mesh, const std::vector<const std::vector<glm::vec3>*>& normal_sets, const FaceClusters& clusters);
 
 enum class Facing { Front, Back, Mixed };
 

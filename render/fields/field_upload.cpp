@@ -1,6 +1,7 @@
 #include "render/fields/field_upload.h"
 
 #include "geometry/mesh/surface_samples.h"
+#include "geometry/parallel/parallel.h"
 #include "render/surface/colormap.h"
 #include "render/fields/mesh_buffers.h"
 
@@ -23,16 +24,16 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
 
     FieldUpload u;
     u.feature_size = feature_size;
-    for (size_t m = 0; m < u.ranges.size(); ++m) u.ranges[m] = robust_range(ColorMap(m), fields);
+    parallel_for(u.ranges.size(), [&](size_t m) { u.ranges[m] = robust_range(ColorMap(m), fields); }, 1);
     if (clusters.vertex_order.size() != n)
         throw std::invalid_argument("MeshBuffers: face clusters of another mesh");
     u.vertices.resize(n);
-    for (size_t i = 0; i < n; ++i) {  // in the clusters' vertex order
+    parallel_for(n, [&](size_t i) {  // in the clusters' vertex order
         const uint32_t v = clusters.vertex_order[i];
         u.vertices[i] = {mesh.positions[v], fields.normals[v], fields.d1[v], fields.d2[v],
                          {fields.k1[v], fields.k2[v]}, fields.dcurv[v], fields.unreliable(v) ? 1.0f : 0.0f,
                          own_fine ? fine_normals[v] : fields.normals[v]};
-    }
+    });
     u.clusters = make_mesh_clusters(mesh, fields, clusters, feature_size, fine_normals);
     if (hatch_seeds) {
         const SurfaceSamples samples = sample_surface(mesh, fields, kHatchSeeds);

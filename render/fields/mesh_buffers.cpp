@@ -3,6 +3,7 @@
 #include "geometry/lines/line_extraction.h"
 #include "geometry/mesh/surface_samples.h"
 #include "geometry/curvature/vertex_flags.h"
+#include "geometry/parallel/parallel.h"
 #include "render/surface/colormap.h"
 
 #include <algorithm>
@@ -110,13 +111,13 @@ void MeshBuffers::keep_cpu_copy(const std::vector<GpuVertex>& v) {
     cpu_mesh_.positions.resize(n);
     f.normals.resize(n), f.k1.resize(n), f.k2.resize(n), f.d1.resize(n), f.d2.resize(n), f.dcurv.resize(n);
     f.flags.resize(n), cpu_fine_normals_.resize(n);
-    for (size_t i = 0; i < n; ++i) {
+    parallel_for(n, [&](size_t i) {
         cpu_mesh_.positions[i] = v[i].position;
         f.normals[i] = v[i].normal, f.d1[i] = v[i].d1, f.d2[i] = v[i].d2;
         f.k1[i] = v[i].curv.x, f.k2[i] = v[i].curv.y, f.dcurv[i] = v[i].dcurv;
         f.flags[i] = v[i].unreliable > 0 ? kFlagUnreliable : 0;
         cpu_fine_normals_[i] = v[i].fine_normal;
-    }
+    });
 }
 
 void MeshBuffers::upload(FieldUpload&& u) {

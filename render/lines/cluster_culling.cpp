@@ -1,5 +1,7 @@
 #include "render/lines/cluster_culling.h"
 
+#include "geometry/parallel/parallel.h"
+
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
@@ -30,8 +32,12 @@ void add_curvature_bounds(MeshClusters& out, size_t c, const SurfaceFields& fiel
 MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
                                 float feature_size, const std::vector<glm::vec3>& fine_normals) {
     MeshClusters out;
-    out.bounds = compute_cluster_bounds(mesh, fields.normals, clusters);
-    if (!fine_normals.empty()) out.fine_bounds = compute_cluster_bounds(mesh, fine_normals, clusters);
+    if (fine_normals.empty()) {
+        out.bounds = compute_cluster_bounds(mesh, fields.normals, clusters);
+    } else {
+        auto both = compute_cluster_bounds_for_sets(mesh, {&fields.normals, &fine_normals}, clusters);
+        out.bounds = std::move(both[0]), out.fine_bounds = std::move(both[1]);
+    }
     out.first_face = clusters.cluster_start;
     if (out.first_face.empty()) out.first_face = {0};
     out.may_have_suggestive.assign(clusters.size(), 0);
@@ -41,7 +47,8 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
     out.max_kmax.assign(clusters.size(), 0.0f);
     out.max_highlight.assign(clusters.size(), 0.0f);
     const double fs2 = double(feature_size) * double(feature_size);
-    for (size_t c = 0; c < clusters.size(); ++c) {
+    // Clusters are independent: each writes only its own entries.
+    parallel_for(clusters.size(), [&](size_t c) {
         double strength = 0;
         for (uint32_t i = clusters.cluster_start[c]; i < clusters.cluster_start[c + 1]; ++i) {
             const Face& f = mesh.faces[clusters.face_order[i]];
@@ -61,7 +68,7 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
         }
         // Float evaluation in the shader: a margin well above its rounding.
         out.max_strength[c] = float(strength * (1 + 1e-4) + 1e-30);
-    }
+    }, 64);
     return out;
 }
 
