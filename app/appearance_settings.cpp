@@ -94,6 +94,15 @@ AppearanceSetting switch_setting(std::string name, std::string help, bool Render
     return a;
 }
 
+// On or off for vector output: not in the viewer's panel (no choices), its
+// value readable (get: kappa.settings() gives the default).
+AppearanceSetting output_switch(std::string name, std::string help, bool RenderSettings::*field, bool cli_flag = false) {
+    AppearanceSetting a{std::move(name), "on|off", std::move(help), "on or off", on_off(field),
+                        cli_flag ? field : nullptr};
+    a.get = [=](const RenderSettings& s) { return std::string(s.*field ? "on" : "off"); };
+    return a;
+}
+
 // One of the names of an enum (render_settings.h), as a combo box in the panel.
 template <typename T>
 AppearanceSetting choice_setting(std::string name, const std::vector<std::string>& names, std::string help,
@@ -217,13 +226,12 @@ const std::vector<AppearanceSetting>& appearance_settings() {
              0, 100, &R::simplify, 0, 2, false, "%.2f px"),
         real("taper", "PX", "vector output: stroke ends thin out over PX pixels (default 0: off)", 0, 1000, &R::taper,
              0, 50, false, "%.1f px"),
-        {"width-by-strength", "on|off",
-         "vector output: show fading as stroke width instead of opacity (default off)", "on or off",
-         on_off(&R::width_by_strength)},
-        {"plotter", "on|off",
-         "vector output for pen plotters: one pen width, no line drawn twice, paths joined where they meet and "
-         "ordered to shorten pen travel (default off)",
-         "on or off", on_off(&R::plotter), &R::plotter},
+        output_switch("width-by-strength", "vector output: show fading as stroke width instead of opacity (default off)",
+                      &R::width_by_strength),
+        output_switch("plotter",
+                      "vector output for pen plotters: one pen width, no line drawn twice, paths joined where they "
+                      "meet and ordered to shorten pen travel (default off)",
+                      &R::plotter, true),
         [] {
             AppearanceSetting a{"background", "COLOR", "white, transparent, black or #rrggbb (default white)",
                                 "white, transparent, black or #rrggbb", word(render::parse_background, &R::background)};

@@ -17,8 +17,9 @@ namespace py = pybind11;
 
 void def_io(py::module_& m);         // io.cpp: MeshError, load_mesh
 void def_curvature(py::module_& m);  // curvature.cpp
-void def_render(py::module_& m);     // render.cpp: render, strokes, gl_context
+void def_render(py::module_& m);     // render.cpp: render, strokes, write, gl_context
 void def_batch(py::module_& m);      // batch.cpp: batch, read_manifest
+void def_settings(py::module_& m);   // settings.cpp: settings, line_groups
 
 // A Mesh from V (N x 3 numbers) and F (M x 3 integers), checked like a file:
 // raises kappa.MeshError (kappa::MeshLoadError) naming the problem.

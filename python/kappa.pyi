@@ -53,9 +53,44 @@ class Stroke(TypedDict):
     opacity: _Float32  # (n,)
     strength: _Float32  # (n,) or empty
     width: float  # pixels; 0: the drawing's line width
+    model_points: _Float32  # (n, 3) on the surface, in V's coordinates; only with space='model'
 
-def strokes(V: npt.ArrayLike, F: npt.ArrayLike, *, camera: _Camera = None, **settings: Any) -> list[Stroke]:
-    """The visible lines of a view as polylines, as `kappa render -o out.svg` writes them."""
+def strokes(
+    V: npt.ArrayLike, F: npt.ArrayLike, *, camera: _Camera = None, space: str = "image", **settings: Any
+) -> list[Stroke]:
+    """The visible lines of a view as polylines, as `kappa render -o out.svg` writes them;
+    space='model' adds each point's place on the surface (model_points)."""
+
+def write(V: npt.ArrayLike, F: npt.ArrayLike, path: _Path, *, camera: _Camera = None, **settings: Any) -> None:
+    """Writes the view as `kappa render -o PATH` does (.png .jpg .svg .pdf, by the extension)."""
+
+class Setting(TypedDict, total=False):
+    name: str  # keyword spelling: 'line_width'
+    label: str
+    help: str
+    expects: str
+    kind: str  # 'number', 'integer', 'switch', 'choice', 'lines', 'color', 'vector', 'text'
+    default: Any
+    min: float
+    max: float
+    logarithmic: bool
+    can_be_off: bool
+    choices: list[str]
+
+def settings() -> list[Setting]:
+    """The appearance settings table (app/appearance_settings.h): names, help, ranges, defaults."""
+
+class LineToggle(TypedDict):
+    kind: str
+    label: str
+    setting: str  # keyword of its threshold or count, '' if none
+
+class LineGroup(TypedDict):
+    title: str
+    lines: list[LineToggle]
+
+def line_groups() -> list[LineGroup]:
+    """The line kinds in the groups of kappa's panel."""
 
 class GlContext(TypedDict):
     description: str

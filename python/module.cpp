@@ -27,4 +27,5 @@ Options are the command line's, with '-' spelled '_' (docs/python.md).)";
     def_curvature(m);
     def_render(m);
     def_batch(m);
+    def_settings(m);
 }

@@ -45,9 +45,14 @@ Mesh drawable_mesh(const py::handle& V, const py::handle& F) {
     return mesh;
 }
 
-py::dict stroke_dict(render::Stroke&& s) {
+// with_model: also 'model_points', the surface points in the mesh's coordinates.
+py::dict stroke_dict(render::Stroke&& s, const DrawingUnits* with_model) {
     const auto n = py::ssize_t(s.points.size());
     py::dict out;
+    if (with_model) {
+        for (glm::vec3& p : s.surface) p = with_model->to_model(p);
+        out["model_points"] = take_array<glm::vec3, float>(std::move(s.surface), {n, 3});
+    }
     out["type"] = std::string(line_type_name(s.type));
     out["hidden"] = s.hidden;
     out["points"] = take_array<glm::vec2, float>(std::move(s.points), {n, 2});
@@ -104,19 +109,25 @@ reused by every later one (kappa.gl_context()).
 )") + kCameraDoc).c_str());
     m.def(
         "strokes",
-        [](const py::handle& V, const py::handle& F, const py::object& camera, const py::kwargs& settings) {
+        [](const py::handle& V, const py::handle& F, const py::object& camera, const std::string& space,
+           const py::kwargs& settings) {
+            if (space != "image" && space != "model")
+                throw py::value_error("space expects 'image' or 'model', got '" + space + "'");
             render::VectorDrawing drawing;
+            DrawingUnits units;
             draw_view(V, F, camera, settings, [&](app::MeshDrawing& d, render::Renderer& r, const render::Camera& view,
                                                   const app::RenderOptions& o) {
                 render::Image underlay;  // the strokes are all that is kept
                 drawing = d.vectors(r, view, o.settings, o.size, underlay);
                 drawing.underlay = nullptr;
+                units = d.units();
             });
             py::list out;
-            for (render::Stroke& s : drawing.strokes) out.append(stroke_dict(std::move(s)));
+            for (render::Stroke& s : drawing.strokes)
+                out.append(stroke_dict(std::move(s), space == "model" ? &units : nullptr));
             return out;
         },
-        py::arg("V"), py::arg("F"), py::kw_only(), py::arg("camera") = py::none(),
+        py::arg("V"), py::arg("F"), py::kw_only(), py::arg("camera") = py::none(), py::arg("space") = "image",
         (std::string(R"(The visible lines of a view as polylines: what `kappa render -o out.svg` writes.
 
 Returns a list of dicts, the hatching strokes first, then the lines:
@@ -124,8 +135,23 @@ Returns a list of dicts, the hatching strokes first, then the lines:
   hidden: True for the dashed hidden parts (hidden_lines=True),
   points: (n, 2) float32 image pixels (x right, y down, (0, 0) the top-left corner),
   opacity: (n,) float32 in [0, 1] (fading), strength: (n,) float32, the test value behind fading
-        (may be empty), width: pixels (0: the drawing's line_width).
+        (may be empty), width: pixels (0: the drawing's line_width),
+  model_points (space='model' only): (n, 3) float32, where each point lies on the surface, in the
+        coordinates of V (the lines' own points; hatching and plotter paths: the drawn depth under them).
 The strokes are simplified (simplify=0.25 px by default) and cleaned up as in the SVG.
+)") + kCameraDoc).c_str());
+    m.def(
+        "write",
+        [](const py::handle& V, const py::handle& F, const py::handle& path, const py::object& camera,
+           const py::kwargs& settings) {
+            const std::string file = path_text(path);
+            draw_view(V, F, camera, settings, [&](app::MeshDrawing& d, render::Renderer& r, const render::Camera& view,
+                                                  const app::RenderOptions& o) { d.write(r, view, o.settings, o.size, file); });
+        },
+        py::arg("V"), py::arg("F"), py::arg("path"), py::kw_only(), py::arg("camera") = py::none(),
+        (std::string(R"(Writes the view to path as `kappa render MESH -o PATH` does: .png, .jpg/.jpeg, .svg (the
+SVG writer: a layer per line type) or .pdf, chosen by the extension. Raises RuntimeError
+"PATH: reason" when the file cannot be written.
 )") + kCameraDoc).c_str());
     m.def(
         "gl_context",

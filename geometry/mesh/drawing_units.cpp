@@ -8,6 +8,7 @@
 namespace kappa {
 
 glm::vec3 DrawingUnits::to_drawing(glm::vec3 p) const { return glm::vec3((glm::dvec3(p) - centre) / scale); }
+glm::vec3 DrawingUnits::to_model(glm::vec3 p) const { return glm::vec3(centre + glm::dvec3(p) * scale); }
 
 glm::mat4 DrawingUnits::view_to_drawing(const glm::mat4& model_view) const {
     if (identity()) return model_view;

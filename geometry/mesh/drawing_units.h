@@ -23,6 +23,7 @@ struct DrawingUnits {
 
     bool identity() const { return scale == 1.0 && centre == glm::dvec3(0.0); }
     glm::vec3 to_drawing(glm::vec3 model_point) const;
+    glm::vec3 to_model(glm::vec3 drawing_point) const;
     float length_to_drawing(float model_length) const { return float(double(model_length) / scale); }
     float length_to_model(float drawing_length) const { return float(double(drawing_length) * scale); }
     // A model-view matrix of the model (model units in, camera units out) as

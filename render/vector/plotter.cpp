@@ -73,6 +73,7 @@ void reverse(Stroke& s) {
     std::reverse(s.points.begin(), s.points.end());
     std::reverse(s.opacity.begin(), s.opacity.end());
     std::reverse(s.strength.begin(), s.strength.end());
+    std::reverse(s.surface.begin(), s.surface.end());
 }
 
 // Joins paths of one type whose ends are within radius: each path is grown

@@ -63,10 +63,12 @@ void simplify_strokes(std::vector<Stroke>& strokes, float tolerance) {
             if (keep[i]) {
                 s.points[n] = s.points[i], s.opacity[n] = s.opacity[i];
                 if (!s.strength.empty()) s.strength[n] = s.strength[i];
+                if (!s.surface.empty()) s.surface[n] = s.surface[i];
                 ++n;
             }
         s.points.resize(n), s.opacity.resize(n);
         if (!s.strength.empty()) s.strength.resize(n);
+        if (!s.surface.empty()) s.surface.resize(n);
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -75,12 +76,13 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
     auto image_point = [&](glm::vec2 window) { return glm::vec2(window.x, viewport.y - window.y); };
     auto close_run = [&] {
         if (run.points.size() >= 2) out.push_back(run);
-        run.points.clear(), run.opacity.clear(), run.strength.clear();
+        run.points.clear(), run.opacity.clear(), run.strength.clear(), run.surface.clear();
     };
-    auto add = [&](glm::vec2 window, float opacity, float strength) {
+    auto add = [&](glm::vec2 window, float opacity, float strength, glm::vec3 surface) {
         const glm::vec2 p = image_point(window);
         if (!run.points.empty() && run.points.back() == p) return;
         run.points.push_back(p), run.opacity.push_back(opacity), run.strength.push_back(strength);
+        run.surface.push_back(surface);
     };
     for (size_t i = 0; i + 1 < line.points.size(); ++i) {
         const WindowPoint a = to_window(mvp, line.points[i], viewport);
@@ -95,6 +97,13 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
         const glm::vec2 side(-along.y, along.x);
         const float oa = line.opacity[i], ob = line.opacity[i + 1];
         const float sa = line.strength[i], sb = line.strength[i + 1];
+        const glm::vec3 pa = line.points[i], pb = line.points[i + 1];
+        // The surface point under window point a + (b - a) t: perspective-correct,
+        // the parameter along the segment in space is (t / wb) / ((1 - t) / wa + t / wb).
+        auto surface_at = [&](float t) {
+            const float s = (t / b.w) / ((1 - t) / a.w + t / b.w);
+            return pa + (pb - pa) * s;
+        };
         // Samples every half pixel, both ends included.
         const int steps = std::max(1, int(std::ceil(2.0f * glm::distance(a.xy, b.xy))));
         for (int k = 0; k <= steps; ++k) {
@@ -108,13 +117,14 @@ void visible_runs(const Polyline& line, LineType type, const glm::mat4& mvp, glm
             }
             if (now != state) {
                 // A change: the run so far ends here, and a new one starts here.
-                if (state != kNone) add(q, oa + (ob - oa) * t, sa + (sb - sa) * t);
+                if (state != kNone) add(q, oa + (ob - oa) * t, sa + (sb - sa) * t, surface_at(t));
                 close_run();
                 state = now;
                 run.hidden = state == kHidden;
             }
             // Keep the path's own vertices and the points where visibility changes.
-            if (state != kNone && (k == 0 || k == steps || run.points.empty())) add(q, oa + (ob - oa) * t, sa + (sb - sa) * t);
+            if (state != kNone && (k == 0 || k == steps || run.points.empty()))
+                add(q, oa + (ob - oa) * t, sa + (sb - sa) * t, surface_at(t));
         }
     }
     close_run();
@@ -174,6 +184,32 @@ std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& ca
             visible_runs(line, LineType(type), frame.mvp, frame.viewport, test, run_options, strokes);
     }
     return strokes;
+}
+
+void attach_surface_points(std::vector<Stroke>& strokes, const Camera& camera, const BoundingSphere& bounds,
+                           const SurfaceDepth& depth) {
+    if (depth.width <= 0 || depth.height <= 0) return;
+    const FrameParams frame = FrameParams::make(camera, bounds, depth.width, depth.height);
+    const glm::mat4 to_model = glm::inverse(frame.mvp);
+    auto at = [&](int x, int y) {
+        x = std::clamp(x, 0, depth.width - 1), y = std::clamp(y, 0, depth.height - 1);
+        return depth.depth[size_t(y) * size_t(depth.width) + size_t(x)];
+    };
+    for (Stroke& s : strokes) {
+        if (s.surface.size() == s.points.size()) continue;
+        s.surface.clear();
+        for (const glm::vec2 p : s.points) {
+            const glm::vec2 window(p.x, float(depth.height) - p.y);  // GL window pixels, y up
+            const int x = int(std::floor(window.x)), y = int(std::floor(window.y));
+            float d = at(x, y);
+            for (int dy = -1; dy <= 1 && d >= 1.0f; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) d = std::min(d, at(x + dx, y + dy));
+            if (d >= 1.0f) d = 0.5f;  // no surface near: window depth 0.5, inside the model's depth range
+            const glm::vec4 ndc(window / frame.viewport * 2.0f - 1.0f, d * 2.0f - 1.0f, 1.0f);
+            const glm::vec4 m = to_model * ndc;
+            s.surface.push_back(glm::vec3(m) / m.w);
+        }
+    }
 }
 
 }  // namespace kappa::render

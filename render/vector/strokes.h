@@ -15,6 +15,7 @@
 #include "render/render_settings.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <vector>
 
@@ -23,6 +24,9 @@ namespace kappa::render {
 struct Stroke {
     LineType type = LineType::Contour;
     std::vector<glm::vec2> points;  // pixels: x right, y down, (0, 0) the image's top-left corner
+    // Per point, where it lies on the surface, in the mesh's coordinates (the
+    // drawing's units: MeshDrawing::units()); empty where not known.
+    std::vector<glm::vec3> surface;
     std::vector<float> opacity;     // per point, in [0, 1] (fading)
     std::vector<float> strength;    // per point: the test value fading uses (LineSegment::strength_a); may be empty
     bool hidden = false;            // a hidden part (--hidden-lines): drawn dashed and light
@@ -54,5 +58,12 @@ struct SurfaceDepth {
 // bounding sphere (the projection's near and far planes, as the renderer).
 std::vector<Stroke> extract_strokes(const StrokeSource& source, const Camera& camera, const BoundingSphere& bounds,
                                     const RenderSettings& settings, const SurfaceDepth& depth);
+
+// Gives the strokes without surface points (hatching, pen-plotter paths)
+// theirs: each point's pixel of the drawn depth (or, on the background, the
+// nearest surface depth of the 3x3 pixels around it) taken back through the
+// camera.
+void attach_surface_points(std::vector<Stroke>& strokes, const Camera& camera, const BoundingSphere& bounds,
+                           const SurfaceDepth& depth);
 
 }  // namespace kappa::render

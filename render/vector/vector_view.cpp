@@ -39,6 +39,7 @@ VectorDrawing draw_vector_view(Renderer& renderer, const Camera& camera, const R
         drawing.taper = settings.taper;
         drawing.width_by_strength = settings.width_by_strength;
     }
+    if (renderer.mesh()) attach_surface_points(drawing.strokes, camera, renderer.mesh()->bounds(), depth);
     return drawing;
 }
 
