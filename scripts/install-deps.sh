@@ -10,6 +10,7 @@ PACKAGES=(
   xvfb xauth
   librsvg2-bin poppler-utils inkscape
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-dask
+  blender
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

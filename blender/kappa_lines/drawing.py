@@ -1,0 +1,97 @@
+"""One frame of kappa lines: the scene read on Blender's thread (Job.prepare), kappa.strokes run on a
+worker thread (kappa's own headless GL context is made current there, never on the thread that holds
+Blender's), the Grease Pencil frame written back on Blender's thread (Job.finish)."""
+import concurrent.futures
+import time
+
+from . import grease_pencil, kappa_module, scene_view, settings
+from .scene_view import DrawError
+
+# kappa's time per frame on a CPU with software GL (llvmpipe), measured on the 2-core test machine
+# with kappa.strokes at 1920x1080 (docs/blender.md): about SECONDS_START plus a face every
+# 1 / FACES_PER_SECOND. Machines with a GPU are faster; the estimate only has to stop meshes that
+# would take minutes from freezing Blender.
+SECONDS_START = 0.3
+FACES_PER_SECOND = 60_000
+
+_worker = concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="kappa")
+
+
+def kappa_or_error():
+    kappa = kappa_module.module()
+    if kappa is None:
+        raise DrawError("kappa lines: " + kappa_module.problem())
+    return kappa
+
+
+def estimated_seconds(face_count):
+    return SECONDS_START + face_count / FACES_PER_SECOND
+
+
+def in_worker(function, *args, **keywords):
+    """function(*args, **keywords) on kappa's thread: a concurrent.futures.Future."""
+    return _worker.submit(function, *args, **keywords)
+
+
+def result_of(future):
+    """The future's result; kappa's exceptions (MeshError, ValueError, RuntimeError) as DrawError."""
+    try:
+        return future.result()
+    except Exception as e:
+        raise DrawError(f"kappa lines: {e}") from None
+
+
+class Scene:
+    """What a kappa call needs from the scene, checked: the module, the view, the selected meshes
+    (not too many faces for the time limit, the camera outside them) and the settings' keywords."""
+
+    def __init__(self, context):
+        self.kappa = kappa_or_error()
+        self.props = context.scene.kappa_lines
+        self.view = scene_view.current_view(context)
+        self.mesh = scene_view.SceneMesh(context)
+        seconds = estimated_seconds(self.mesh.face_count)
+        if seconds > self.props.time_limit:
+            raise DrawError(f"kappa lines: {self.mesh.face_count:,} faces would take about {seconds:.2g} s a frame, "
+                            f"more than the time limit of {self.props.time_limit:g} s: raise it in the panel or "
+                            "decimate")
+        self.mesh.check_outside(self.view.eye)
+        self.keywords = settings.keywords(self.props, self.kappa)
+
+
+class Job(Scene):
+    """One frame: made on Blender's thread, start() hands kappa's part to the worker, finish()
+    writes the strokes."""
+
+    def __init__(self, context, frame_number):
+        super().__init__(context)
+        self.frame_number = frame_number
+        self.future = None
+
+    def start(self):
+        k = dict(self.keywords)
+        k.pop("line_color")  # the Grease Pencil material's colour
+        self.future = in_worker(self.kappa.strokes, self.mesh.V, self.mesh.F, camera=self.view.camera,
+                                size=self.view.size, space="model", **k)
+
+    def done(self):
+        return self.future.done()
+
+    def finish(self, scene):
+        """Writes the frame; returns the number of strokes."""
+        strokes = result_of(self.future)
+        obj = grease_pencil.lines_object(scene)
+        material = grease_pencil.line_material(obj, tuple(self.props.line_color))
+        layers = [("contours" if kind == "silhouette" else kind) for kind in settings.chosen_lines(self.props, self.kappa)]
+        grease_pencil.write_frame(obj, self.frame_number, strokes, self.view.eye, layers, self.props.pull,
+                                  self.props.line_width, self.props.width_by_strength, material)
+        return len(strokes)
+
+
+def draw_now(context, frame_number):
+    """Draws one frame and waits for it; returns (strokes, seconds)."""
+    start = time.perf_counter()
+    job = Job(context, frame_number)
+    job.start()
+    count = job.finish(context.scene)
+    return count, time.perf_counter() - start

@@ -1,0 +1,79 @@
+"""kappa's strokes as the Grease Pencil object `kappa lines`: one layer per line type, named as
+kappa names them (contours, suggestive, ...), one Grease Pencil frame per drawn scene frame, 3D
+points on the surface moved a little toward the camera (along the line of sight, so the picture
+does not change), opacity and width following kappa's fading."""
+import math
+
+import bpy
+import numpy as np
+
+OBJECT_NAME = "kappa lines"
+
+
+def lines_object(scene):
+    """The `kappa lines` Grease Pencil object, made (and linked to the scene) when missing."""
+    obj = bpy.data.objects.get(OBJECT_NAME)
+    if obj is not None and obj.type != "GPENCIL":
+        obj.name = OBJECT_NAME + " (not Grease Pencil)"
+        obj = None
+    if obj is None:
+        data = bpy.data.grease_pencils.new(OBJECT_NAME)
+        data.stroke_depth_order = "3D"  # strokes hide behind the surfaces in front of them
+        data.stroke_thickness_space = "SCREENSPACE"  # line widths in pixels, as kappa's
+        obj = bpy.data.objects.new(OBJECT_NAME, data)
+    if scene.collection.objects.get(obj.name) is None and obj.name not in scene.objects:
+        scene.collection.objects.link(obj)
+    obj.matrix_world.identity()  # points are written in world space
+    return obj
+
+
+def line_material(obj, color):
+    name = OBJECT_NAME
+    mat = bpy.data.materials.get(name)
+    if mat is None or not mat.is_grease_pencil:
+        mat = bpy.data.materials.new(name)
+        bpy.data.materials.create_gpencil_data(mat)
+    mat.grease_pencil.color = (*color, 1.0)
+    if mat.name not in obj.data.materials:
+        obj.data.materials.append(mat)
+    return obj.data.materials.find(mat.name)
+
+
+def empty_frame(layer, frame_number):
+    for frame in layer.frames:
+        if frame.frame_number == frame_number:
+            layer.frames.remove(frame)
+            break
+    return layer.frames.new(frame_number)
+
+
+def write_frame(obj, frame_number, strokes, eye, layer_names, pull, line_width, width_by_strength, material):
+    """Replaces frame `frame_number` of the layers in layer_names (and of any layer a stroke's type
+    names) with `strokes` (kappa.strokes(..., space='model') in world space)."""
+    data = obj.data
+    names = list(dict.fromkeys(list(layer_names) + [s["type"] for s in strokes]))
+    frames = {}
+    for name in names:
+        layer = data.layers.get(name) or data.layers.new(name, set_active=False)
+        layer.use_lights = False
+        frames[name] = empty_frame(layer, frame_number)
+    # Grease Pencil widths are whole pixels: the rest goes into the points' pressure.
+    for s in strokes:
+        if s["hidden"] or len(s["model_points"]) < 2:
+            continue
+        width = s["width"] or line_width
+        gp_width = max(1, math.ceil(width))
+        fade = np.asarray(s["opacity"], np.float32)
+        stroke = frames[s["type"]].strokes.new()
+        stroke.display_mode = "3DSPACE"
+        stroke.line_width = gp_width
+        stroke.material_index = material
+        points = np.asarray(s["model_points"], np.float64)
+        points = points + (eye - points) * pull
+        stroke.points.add(len(points))
+        stroke.points.foreach_set("co", points.astype(np.float32).ravel())
+        scale = np.float32(width / gp_width)
+        pressure = scale * (fade if width_by_strength else np.ones_like(fade))
+        stroke.points.foreach_set("pressure", pressure)
+        stroke.points.foreach_set("strength", np.ones_like(fade) if width_by_strength else fade)
+    data.update_tag()
