@@ -98,4 +98,40 @@ def test_settings_come_from_kappas_table():
     assert on == set(table["lines"]["default"])
 
 
+class Layout:
+    """Stands in for bpy.types.UILayout: records what the panel draws."""
+
+    def __init__(self, drawn):
+        self.drawn, self.active = drawn, True
+
+    def column(self, **_):
+        return Layout(self.drawn)
+
+    row = box = column
+
+    def label(self, text="", **_):
+        self.drawn.append(("label", text))
+
+    def prop(self, data, name, **_):
+        assert name in data.bl_rna.properties, name
+        self.drawn.append(("prop", name))
+
+    def operator(self, idname, **_):
+        module, name = idname.split(".")
+        assert hasattr(getattr(bpy.ops, module), name), idname
+        self.drawn.append(("operator", idname))
+
+
+def test_panel_draws_every_setting_and_operator():
+    from kappa_lines import panels
+    drawn = []
+    panels.draw_settings(Layout(drawn), bpy.context)
+    props = {name for kind, name in drawn if kind == "prop"}
+    operators = {name for kind, name in drawn if kind == "operator"}
+    assert operators == {"kappa.draw_lines", "kappa.bake_frames", "kappa.export_svg"}
+    rna = set(bpy.context.scene.kappa_lines.bl_rna.properties.keys()) - {"rna_type", "name"}  # (every PropertyGroup's)
+    assert props == rna, rna ^ props  # every setting has its widget, and no widget lacks its setting
+    assert "suggestive highlights" in {bpy.context.scene.kappa_lines.bl_rna.properties[p].name for p in props}
+
+
 bt.run(globals())
