@@ -7,12 +7,12 @@ import time
 from . import grease_pencil, kappa_module, scene_view, settings
 from .scene_view import DrawError
 
-# kappa's time per frame on a CPU with software GL (llvmpipe), measured on the 2-core test machine
-# with kappa.strokes at 1920x1080 (docs/blender.md): about SECONDS_START plus a face every
-# 1 / FACES_PER_SECOND. Machines with a GPU are faster; the estimate only has to stop meshes that
-# would take minutes from freezing Blender.
-SECONDS_START = 0.3
-FACES_PER_SECOND = 60_000
+# kappa's time per frame with software GL (llvmpipe) at 1920x1080, measured with kappa.strokes on a
+# shared 2-core machine (bunny 69k faces 1.34 s, dragon 100k 1.53 s, bunny-1M 1.11M 6.8 s): about
+# SECONDS_START plus a face every 1 / FACES_PER_SECOND. GPUs are faster; the estimate only has to keep
+# meshes that would take minutes from freezing Blender.
+SECONDS_START = 1.0
+FACES_PER_SECOND = 190_000
 
 _worker = concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="kappa")
 
