@@ -1,6 +1,8 @@
 """The add-on's operators: bpy.ops.kappa.draw_lines(), bpy.ops.kappa.bake_frames(frame_start=...,
 frame_end=...), bpy.ops.kappa.export_svg(filepath=...). A problem ends an operator with one line in
 Blender's report (scripts see it as the RuntimeError of the operator call), never a traceback."""
+import time
+
 import bpy
 
 from . import drawing
@@ -15,12 +17,46 @@ class KAPPA_OT_draw_lines(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
+        """Blender waits (scripts, background mode)."""
         try:
             count, seconds = drawing.draw_now(context, context.scene.frame_current)
         except DrawError as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
         self.report({"INFO"}, f"kappa lines: {count} strokes in {seconds:.2f} s")
+        return {"FINISHED"}
+
+    def invoke(self, context, event):
+        """In the UI: kappa draws while Blender keeps drawing; Esc drops the result."""
+        try:
+            self._job = drawing.Job(context, context.scene.frame_current)
+            self._job.start()
+        except DrawError as e:
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        self._start = time.perf_counter()
+        wm = context.window_manager
+        self._timer = wm.event_timer_add(0.05, window=context.window)
+        wm.modal_handler_add(self)
+        context.workspace.status_text_set("kappa lines: drawing (Esc cancels)")
+        return {"RUNNING_MODAL"}
+
+    def modal(self, context, event):
+        if event.type not in ("TIMER", "ESC"):
+            return {"PASS_THROUGH"}
+        if event.type == "TIMER" and not self._job.done():
+            return {"RUNNING_MODAL"}
+        context.window_manager.event_timer_remove(self._timer)
+        context.workspace.status_text_set(None)
+        if event.type == "ESC":
+            self.report({"WARNING"}, "kappa lines: cancelled (kappa finishes its frame, which is dropped)")
+            return {"CANCELLED"}
+        try:
+            count = self._job.finish(context.scene)
+        except DrawError as e:
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"kappa lines: {count} strokes in {time.perf_counter() - self._start:.2f} s")
         return {"FINISHED"}
 
 

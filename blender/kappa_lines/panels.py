@@ -16,13 +16,13 @@ def draw_settings(layout, context):
     col = layout.column(align=True)
     col.operator("kappa.draw_lines", icon="GREASEPENCIL")
     row = col.row(align=True)
-    row.operator("kappa.bake_frames", icon="RENDER_ANIMATION")
-    row.operator("kappa.export_svg", icon="EXPORT")
+    row.operator("kappa.bake_frames", text="Bake frames", icon="RENDER_ANIMATION")
+    row.operator("kappa.export_svg", text="Export SVG", icon="EXPORT")
     for group in kappa.line_groups():
         box = layout.box()
         box.label(text=group["title"])
         for line in group["lines"]:
-            row = box.row(align=True)
+            row = box.split(factor=0.6, align=True)  # room for the labels in a narrow sidebar
             row.prop(props, settings.line_property(line["kind"]))
             if line["setting"]:
                 sub = row.row(align=True)

@@ -92,9 +92,11 @@ def viewport_view(region, region_3d):
 
 
 def current_view(context):
-    """The scene camera's view; without a scene camera, the 3D view the operator runs in."""
+    """The scene camera's view; without a scene camera, the 3D view the operator runs in (from its
+    sidebar too: the view is the area's main region)."""
     scene = context.scene
-    region_3d = getattr(context, "region_data", None)
-    if scene.camera is None and isinstance(region_3d, bpy.types.RegionView3D):
-        return viewport_view(context.region, region_3d)
+    area = getattr(context, "area", None)
+    if scene.camera is None and area is not None and area.type == "VIEW_3D":
+        region = next(r for r in area.regions if r.type == "WINDOW")
+        return viewport_view(region, area.spaces.active.region_3d)
     return scene_camera_view(scene)

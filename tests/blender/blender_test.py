@@ -112,15 +112,17 @@ def camera_pixels(scene, points):
     return out
 
 
-def stroke_ink(scene, strokes, min_strength=0.5):
+def stroke_ink(scene, strokes, min_strength=0.5, project=None, size=None):
     """The strokes' ink over the render's pixels: every pixel a stroke passes through (segments sampled
     every quarter pixel) where its strength is at least min_strength (kappa's raster counts ink from
-    half opacity: ink is a channel below 128)."""
-    w, h = (round(scene.render.resolution_x * scene.render.resolution_percentage / 100),
-            round(scene.render.resolution_y * scene.render.resolution_percentage / 100))
+    half opacity: ink is a channel below 128). project: world points to pixels (default: the scene
+    camera's camera_pixels) over an image of `size` (default: the render's)."""
+    w, h = size or (round(scene.render.resolution_x * scene.render.resolution_percentage / 100),
+                    round(scene.render.resolution_y * scene.render.resolution_percentage / 100))
+    project = project or (lambda points: camera_pixels(scene, points))
     ink = np.zeros((h, w), bool)
     for points, strength, _ in strokes:
-        p = camera_pixels(scene, points)
+        p = project(points)
         for i in range(len(p) - 1):
             if min(strength[i], strength[i + 1]) < min_strength:
                 continue
@@ -183,6 +185,14 @@ def draw_error(operator, **keywords):
     except RuntimeError as e:
         return str(e)
     raise AssertionError(f"{operator} did not fail")
+
+
+def region_pixels(region, region_3d, points):
+    """Pixels (x right, y down) of world points in a 3D view, by its own perspective matrix."""
+    M = np.array(region_3d.perspective_matrix)
+    c = np.c_[np.asarray(points, np.float64), np.ones(len(points))] @ M.T
+    ndc = c[:, :2] / c[:, 3:]
+    return np.stack([(ndc[:, 0] + 1) / 2 * region.width, (1 - ndc[:, 1]) / 2 * region.height], -1)
 
 
 def run(tests):

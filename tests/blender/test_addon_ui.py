@@ -109,7 +109,7 @@ class Layout:
     def column(self, **_):
         return Layout(self.drawn)
 
-    row = box = column
+    row = box = split = column
 
     def label(self, text="", **_):
         self.drawn.append(("label", text))
