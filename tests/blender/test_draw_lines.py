@@ -71,6 +71,32 @@ def test_points_sit_on_the_surface_pulled_toward_the_camera():
     assert abs(np.median(offsets) - 1) < 0.02, np.median(offsets)
 
 
+def test_fading_gives_strength_or_pressure():
+    scene = bpy.context.scene
+    monkey = bt.suzanne(scene, levels=1)
+    bt.add_camera(scene, (2.2, -3.4, 1.4), (0, 0, 0.1))
+    bt.select_only(monkey)
+    props = scene.kappa_lines
+    props.line_width = 2.5  # Grease Pencil's whole pixels: width 3, pressure 2.5 / 3
+    bpy.ops.kappa.draw_lines()
+    suggestive = bt.gp_strokes()["suggestive"]
+    strength = np.concatenate([s for _, s, _ in suggestive])
+    pressure = np.concatenate([p for _, _, p in suggestive])
+    print(f"  fade as opacity: strength {strength.min():.2f}..{strength.max():.2f}, pressure {pressure.min():.3f}")
+    assert strength.min() < 0.5 and strength.max() > 0.9  # suggestive contours fade out at their ends
+    assert np.allclose(pressure, 2.5 / 3)
+    widths = {s.line_width for layer in bpy.data.objects["kappa lines"].data.layers for f in layer.frames
+              for s in f.strokes}
+    assert widths == {3}, widths
+    props.width_by_strength = True
+    bpy.ops.kappa.draw_lines()
+    suggestive = bt.gp_strokes()["suggestive"]
+    strength = np.concatenate([s for _, s, _ in suggestive])
+    pressure = np.concatenate([p for _, _, p in suggestive])
+    print(f"  fade as width: pressure {pressure.min():.2f}..{pressure.max():.2f}")
+    assert np.all(strength == 1) and pressure.min() < 0.5 * 2.5 / 3 and pressure.max() > 0.9 * 2.5 / 3
+
+
 def test_objects_hide_each_others_lines():
     scene = bpy.context.scene
     back = bt.suzanne(scene, levels=1, location=(0, 2, 0))
@@ -112,6 +138,11 @@ def test_camera_orbit_bakes_each_frame_as_its_render():
         bt.aim(cam, (4 * math.sin(a), -4 * math.cos(a), 1), (0, 0, 0))
         cam.keyframe_insert("location", frame=frame)
         cam.keyframe_insert("rotation_euler", frame=frame)
+        # The monkey moves and turns too: each frame is drawn from the scene at that frame.
+        monkey.location = (0.15 * frame, 0, 0)
+        monkey.rotation_euler = (0, 0, math.radians(-15 * frame))
+        monkey.keyframe_insert("location", frame=frame)
+        monkey.keyframe_insert("rotation_euler", frame=frame)
     bt.select_only(monkey)
     assert bpy.ops.kappa.bake_frames(frame_start=1, frame_end=3) == {"FINISHED"}
     layer = bpy.data.objects["kappa lines"].data.layers["contours"]
