@@ -1,7 +1,6 @@
 """What one kappa call draws: the selected mesh objects of a scene, evaluated with their modifiers,
 as one set of world-space triangles, and the view (the scene camera, or the 3D view) in kappa's
 terms. Problems are raised as DrawError with the one line the report shows."""
-import bpy
 import numpy as np
 
 from . import geometry, view
