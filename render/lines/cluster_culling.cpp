@@ -12,19 +12,30 @@ namespace kappa::render {
 
 namespace {
 
-// Cluster c's bounds for the curvature lines, with face f (all vertices reliable).
-void add_curvature_bounds(MeshClusters& out, size_t c, const SurfaceFields& fields, const Face& f, float fs) {
-    int positive_k = 0, positive_h = 0;
-    for (int k = 0; k < 3; ++k) {
-        const float k1 = fields.k1[f[k]], k2 = fields.k2[f[k]];
-        positive_k += k1 * k2 > 0.0f;
-        positive_h += 0.5f * (k1 + k2) > 0.0f;
+// What the clusters' bounds need of one vertex, computed once a vertex
+// rather than once a face corner.
+struct VertexBounds {
+    float kmax = 0;       // max(|k1|, |k2|) fs
+    float highlight = 0;  // (kmax^2 - kmin^2) fs^2
+    double strength = 0;  // |C| fs^2 (dcurv_norm), as the shader bounds Dw kr
+    bool reliable = false, k2_positive = false, k1_negative = false, positive_k = false, positive_h = false;
+};
+
+std::vector<VertexBounds> vertex_bounds(const SurfaceFields& fields, float fs) {
+    const double fs2 = double(fs) * double(fs);
+    std::vector<VertexBounds> out(fields.k1.size());
+    parallel_for(out.size(), [&](size_t v) {
+        VertexBounds& b = out[v];
+        const float k1 = fields.k1[v], k2 = fields.k2[v];
         const float kmax = std::max(std::fabs(k1), std::fabs(k2)), kmin = std::min(std::fabs(k1), std::fabs(k2));
-        out.max_kmax[c] = std::max(out.max_kmax[c], kmax * fs);
-        out.max_highlight[c] = std::max(out.max_highlight[c], (kmax * kmax - kmin * kmin) * fs * fs);
-    }
-    if (positive_k % 3 != 0) out.may_have_parabolic[c] = 1;
-    if (positive_h % 3 != 0) out.may_have_mean_zero[c] = 1;
+        b.kmax = kmax * fs;
+        b.highlight = (kmax * kmax - kmin * kmin) * fs * fs;
+        b.strength = dcurv_norm(glm::dvec4(fields.dcurv[v])) * fs2;
+        b.reliable = !fields.unreliable(v);
+        b.k2_positive = k2 > 0, b.k1_negative = k1 < 0;
+        b.positive_k = k1 * k2 > 0.0f, b.positive_h = 0.5f * (k1 + k2) > 0.0f;
+    });
+    return out;
 }
 
 }  // namespace
@@ -46,25 +57,32 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
     out.may_have_mean_zero.assign(clusters.size(), 0);
     out.max_kmax.assign(clusters.size(), 0.0f);
     out.max_highlight.assign(clusters.size(), 0.0f);
-    const double fs2 = double(feature_size) * double(feature_size);
+    const std::vector<VertexBounds> vb = vertex_bounds(fields, feature_size);
     // Clusters are independent: each writes only its own entries.
     parallel_for(clusters.size(), [&](size_t c) {
         double strength = 0;
         for (uint32_t i = clusters.cluster_start[c]; i < clusters.cluster_start[c + 1]; ++i) {
             const Face& f = mesh.faces[clusters.face_order[i]];
+            const VertexBounds* corner[3] = {&vb[f[0]], &vb[f[1]], &vb[f[2]]};
             bool reliable = true, elliptic_up = true, elliptic_down = true;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = f[k];
-                reliable = reliable && !fields.unreliable(v);
-                elliptic_up = elliptic_up && fields.k2[v] > 0;     // k1 >= k2 > 0: kr > 0
-                elliptic_down = elliptic_down && fields.k1[v] < 0;  // k2 <= k1 < 0: kr < 0
+            for (const VertexBounds* b : corner) {
+                reliable = reliable && b->reliable;
+                elliptic_up = elliptic_up && b->k2_positive;     // k1 >= k2 > 0: kr > 0
+                elliptic_down = elliptic_down && b->k1_negative;  // k2 <= k1 < 0: kr < 0
             }
-            if (reliable) add_curvature_bounds(out, c, fields, f, feature_size);
+            if (reliable) {  // the curvature lines' bounds
+                int positive_k = 0, positive_h = 0;
+                for (const VertexBounds* b : corner) {
+                    positive_k += b->positive_k, positive_h += b->positive_h;
+                    out.max_kmax[c] = std::max(out.max_kmax[c], b->kmax);
+                    out.max_highlight[c] = std::max(out.max_highlight[c], b->highlight);
+                }
+                if (positive_k % 3 != 0) out.may_have_parabolic[c] = 1;
+                if (positive_h % 3 != 0) out.may_have_mean_zero[c] = 1;
+            }
             if (!reliable || elliptic_up || elliptic_down) continue;
             out.may_have_suggestive[c] = 1;
-            for (int k = 0; k < 3; ++k) {
-                strength = std::max(strength, dcurv_norm(glm::dvec4(fields.dcurv[f[k]])) * fs2);
-            }
+            for (const VertexBounds* b : corner) strength = std::max(strength, b->strength);
         }
         // Float evaluation in the shader: a margin well above its rounding.
         out.max_strength[c] = float(strength * (1 + 1e-4) + 1e-30);
