@@ -82,7 +82,10 @@ class Job(Scene):
         strokes = result_of(self.future)
         obj = grease_pencil.lines_object(scene)
         material = grease_pencil.line_material(obj, tuple(self.props.line_color))
-        layers = [("contours" if kind == "silhouette" else kind) for kind in settings.chosen_lines(self.props, self.kappa)]
+        # The chosen layers, and kappa's other layers already there (emptied: lines no longer chosen).
+        layers = settings.layer_names(self.props, self.kappa)
+        layers += [name for name in settings.layer_names(self.props, self.kappa, chosen=False)
+                   if name in obj.data.layers and name not in layers]
         grease_pencil.write_frame(obj, self.frame_number, strokes, self.view.eye, layers, self.props.pull,
                                   self.props.line_width, self.props.width_by_strength, material)
         return len(strokes)

@@ -34,9 +34,14 @@ def draw_settings(layout, context):
     sub = row.row(align=True)
     sub.active = props.detail_on
     sub.prop(props, "detail")
-    for name in ("line_width", "fade", "width_by_strength", "simplify", "min_stroke", "line_color", "pull",
-                 "time_limit"):
+    for name in ("line_width", "fade", "width_by_strength", "simplify", "min_stroke", "line_color",
+                 "hidden_lines", "pull", "time_limit"):
         col.prop(props, name)
+    box = layout.box()
+    box.prop(props, "hatching")
+    sub = box.row()
+    sub.active = props.hatching != "none"
+    sub.prop(props, "hatch_spacing")
 
 
 class KAPPA_PT_sidebar(bpy.types.Panel):

@@ -4,7 +4,8 @@ defaults are typed once; and the keywords kappa.strokes takes back from them."""
 import bpy
 
 # The settings the panel shows, in its order (kappa.settings() has them all).
-SHOWN = ("detail", "line_width", "fade", "width_by_strength", "simplify", "min_stroke", "line_color")
+SHOWN = ("detail", "line_width", "fade", "width_by_strength", "simplify", "min_stroke", "line_color",
+         "hatching", "hatch_spacing", "hidden_lines")
 
 
 def line_property(kind):
@@ -25,6 +26,9 @@ def _property(s):
         return _number_property(s, kind == "integer")
     if kind == "switch":
         return bpy.props.BoolProperty(name=s["label"], description=s["help"], default=bool(s["default"]))
+    if kind == "choice":
+        return bpy.props.EnumProperty(name=s["label"], description=s["help"], default=s["default"],
+                                      items=[(c, c, "") for c in s["choices"]])
     if kind == "color":
         return bpy.props.FloatVectorProperty(name=s["label"], description=s["help"], subtype="COLOR", size=3,
                                              min=0, max=1, default=tuple(s["default"][:3]))
@@ -64,9 +68,25 @@ def make_settings_class(kappa):
     return type("KappaLinesSettings", (bpy.types.PropertyGroup,), {"__annotations__": annotations})
 
 
+def all_lines(kappa):
+    return [line["kind"] for group in kappa.line_groups() for line in group["lines"]]
+
+
 def chosen_lines(props, kappa):
-    return [line["kind"] for group in kappa.line_groups() for line in group["lines"]
-            if getattr(props, line_property(line["kind"]))]
+    return [kind for kind in all_lines(kappa) if getattr(props, line_property(kind))]
+
+
+def layer_names(props, kappa, chosen=True):
+    """The Grease Pencil layers these settings draw into: the chosen line types (named as kappa's SVG
+    layers: contours, suggestive, ...), hatching when it is on, and `hidden` for the dashed hidden
+    parts of the lines when hidden lines are on. chosen=False: every layer kappa can draw."""
+    kinds = chosen_lines(props, kappa) if chosen else all_lines(kappa)
+    names = [("contours" if kind == "silhouette" else kind) for kind in kinds]
+    if props.hatching != "none" or not chosen:
+        names.append("hatching")
+    if props.hidden_lines or not chosen:
+        names.append("hidden")
+    return list(dict.fromkeys(names))
 
 
 def keywords(props, kappa):

@@ -171,8 +171,9 @@ def kappa_render_of_view(scene, objects):
 
 
 def agreement(scene, objects, frame_number=None, radius=2):
-    """(strokes' ink within radius of the render's, the render's within radius of the strokes')."""
-    strokes = [s for layer in gp_strokes(frame_number).values() for s in layer]
+    """(strokes' ink within radius of the render's, the render's within radius of the strokes'), the
+    dashed hidden lines (35% ink, not ink to kappa's measure) left out."""
+    strokes = [s for name, layer in gp_strokes(frame_number).items() if name != "hidden" for s in layer]
     a = stroke_ink(scene, strokes)
     b = render_ink(kappa_render_of_view(scene, objects))
     return ink_within(a, b, radius), ink_within(b, a, radius), int(a.sum()), int(b.sum())

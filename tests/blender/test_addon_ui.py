@@ -98,6 +98,11 @@ def test_settings_come_from_kappas_table():
     on = {line["kind"] for g in bt.kappa.line_groups() for line in g["lines"]
           if getattr(props, "line_" + line["kind"].replace("-", "_"))}
     assert on == set(table["lines"]["default"])
+    # A choice: hatching's words, default and help.
+    rna = props.bl_rna.properties["hatching"]
+    assert [item.identifier for item in rna.enum_items] == table["hatching"]["choices"]
+    assert props.hatching == table["hatching"]["default"] and rna.description == table["hatching"]["help"]
+    assert props.hidden_lines == table["hidden_lines"]["default"]
 
 
 class Layout:
