@@ -20,6 +20,7 @@ void def_curvature(py::module_& m);  // curvature.cpp
 void def_render(py::module_& m);     // render.cpp: render, strokes, write, gl_context
 void def_batch(py::module_& m);      // batch.cpp: batch, read_manifest
 void def_settings(py::module_& m);   // settings.cpp: settings, line_groups
+void def_ink(py::module_& m);        // ink.cpp: ink_agreement
 
 // A Mesh from V (N x 3 numbers) and F (M x 3 integers), checked like a file:
 // raises kappa.MeshError (kappa::MeshLoadError) naming the problem.

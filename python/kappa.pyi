@@ -92,6 +92,10 @@ class LineGroup(TypedDict):
 def line_groups() -> list[LineGroup]:
     """The line kinds in the groups of kappa's panel."""
 
+def ink_agreement(a: npt.ArrayLike | _Path, b: npt.ArrayLike | _Path, radius: float = 2.0) -> tuple[float, float]:
+    """(fraction of a's ink within radius px of b's, fraction of b's within radius of a's); a and b are
+    (h, w, 3|4) uint8 images (ink: darkest channel below 128), (h, w) ink masks or PNG paths."""
+
 class GlContext(TypedDict):
     description: str
     contexts_created: int

@@ -28,4 +28,5 @@ Options are the command line's, with '-' spelled '_' (docs/python.md).)";
     def_render(m);
     def_batch(m);
     def_settings(m);
+    def_ink(m);
 }

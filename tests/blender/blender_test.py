@@ -135,27 +135,8 @@ def stroke_ink(scene, strokes, min_strength=0.5, project=None, size=None):
 
 
 def render_ink(image):
-    """kappa's ink convention: a pixel whose darkest channel is below 128."""
+    """kappa's ink convention (kappa.ink_agreement's): a pixel whose darkest channel is below 128."""
     return image[..., :3].min(-1) < 128
-
-
-def grown(ink, radius):
-    """Pixels within `radius` (Euclidean, between pixel centres) of ink."""
-    out = ink.copy()
-    h, w = ink.shape
-    r = int(radius)
-    for dy in range(-r, r + 1):
-        for dx in range(-r, r + 1):
-            if dx * dx + dy * dy > radius * radius or (dx == 0 and dy == 0):
-                continue
-            out[max(0, dy):h + min(0, dy), max(0, dx):w + min(0, dx)] |= \
-                ink[max(0, -dy):h + min(0, -dy), max(0, -dx):w + min(0, -dx)]
-    return out
-
-
-def ink_within(a, b, radius):
-    """Fraction of a's ink within radius of b's ink (render/image/ink_agreement.h's measure)."""
-    return 1.0 if not a.any() else float((a & grown(b, radius)).sum() / a.sum())
 
 
 def kappa_render_of_view(scene, objects):
@@ -175,8 +156,8 @@ def agreement(scene, objects, frame_number=None, radius=2):
     dashed hidden lines (35% ink, not ink to kappa's measure) left out."""
     strokes = [s for name, layer in gp_strokes(frame_number).items() if name != "hidden" for s in layer]
     a = stroke_ink(scene, strokes)
-    b = render_ink(kappa_render_of_view(scene, objects))
-    return ink_within(a, b, radius), ink_within(b, a, radius), int(a.sum()), int(b.sum())
+    image = kappa_render_of_view(scene, objects)
+    return (*kappa.ink_agreement(a, image, radius), int(a.sum()), int(render_ink(image).sum()))
 
 
 def draw_error(operator, **keywords):

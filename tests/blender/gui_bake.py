@@ -79,7 +79,7 @@ def check_viewport_lines():
         image = drawing.in_worker(bt.kappa.render, mesh.V, mesh.F, camera=view.camera, size=view.size,
                                   shading="none", **settings.keywords(scene.kappa_lines, bt.kappa)).result()
         b = bt.render_ink(image)
-        within = bt.ink_within(a, b, 2), bt.ink_within(b, a, 2)
+        within = bt.kappa.ink_agreement(a, image, 2)
         print(f"3D view {size}: ink within 2 px {within[0]:.3f} and {within[1]:.3f} ({a.sum()} and {b.sum()} px)",
               flush=True)
         assert a.sum() > 300 and min(within) >= 0.95, within

@@ -72,7 +72,7 @@ def test_hidden_lines_on_their_layer_where_kappa_render_draws_them():
     without = bt.kappa_render_of_view(scene, [monkey])[..., :3].min(-1).astype(int)
     rendered = without - with_hidden > 40  # a dash darkens white by 0.35 * 255 = 89
     drawn = bt.stroke_ink(scene, hidden)
-    on_render, on_strokes = bt.ink_within(drawn, rendered, RADIUS), bt.ink_within(rendered, drawn, RADIUS)
+    on_render, on_strokes = bt.kappa.ink_agreement(drawn, rendered, RADIUS)
     print(f"  hidden: strokes {drawn.sum()} px, render {rendered.sum()} px; within {RADIUS} px: "
           f"{on_render:.3f} and {on_strokes:.3f}")
     assert drawn.sum() > 300 and rendered.sum() > 300

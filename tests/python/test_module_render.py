@@ -81,15 +81,11 @@ def test_strokes_lie_on_the_rendered_lines():
     assert points.dtype == np.float32 and points.shape[1] == 2
     assert all(len(s["opacity"]) == len(s["points"]) for s in strokes)
     assert points.min() >= 0 and points[:, 0].max() <= 256 and points[:, 1].max() <= 192
-    # Every stroke point within 2 px of the raster's ink, for 95% of them.
-    ink = image[..., :3].max(-1) < 160
-    grown = ink.copy()
-    for dy in range(-2, 3):
-        for dx in range(-2, 3):
-            grown |= np.roll(np.roll(ink, dy, 0), dx, 1)
-    x = np.clip(points[:, 0].astype(int), 0, 255)
-    y = np.clip(points[:, 1].astype(int), 0, 191)
-    assert grown[y, x].mean() > 0.95
+    # The pixels of the stroke points within 2 px of the raster's ink, 95% of them.
+    at_points = np.zeros(image.shape[:2], bool)
+    at_points[np.clip(points[:, 1].astype(int), 0, 191), np.clip(points[:, 0].astype(int), 0, 255)] = True
+    on_ink, _ = kappa.ink_agreement(at_points, image, radius=2)
+    assert on_ink > 0.95, on_ink  # measured 1.000
 
 
 def test_bad_settings_raise_with_the_keyword_spelling():
