@@ -7,12 +7,16 @@ import time
 from . import grease_pencil, kappa_module, scene_view, settings
 from .scene_view import DrawError
 
-# kappa's time per frame with software GL (llvmpipe) at 1920x1080, measured with kappa.strokes on a
-# shared 2-core machine (bunny 69k faces 1.34 s, dragon 100k 1.53 s, bunny-1M 1.11M 6.8 s): about
-# SECONDS_START plus a face every 1 / FACES_PER_SECOND. GPUs are faster; the estimate only has to keep
-# meshes that would take minutes from freezing Blender.
-SECONDS_START = 1.0
+# kappa's time per frame with software GL (llvmpipe), measured with kappa.strokes on a shared 2-core
+# machine: about SECONDS_START, plus a face every 1 / FACES_PER_SECOND (at 1920x1080: bunny 69k faces
+# 1.34 s, dragon 100k 1.53 s, bunny-1M 1.11M 6.8 s), plus SECONDS_PER_MEGAPIXEL of the image (spot,
+# 6k faces: 0.15 s at 480x270, 0.45 s at 1920x1080, 1.24 s at 3840x2160), more with hatching (its
+# streamlines are traced over the image: spot 0.20, 1.31, 3.41 s). GPUs are faster; the estimate
+# only has to keep meshes and images that would take minutes from freezing Blender.
+SECONDS_START = 0.7
 FACES_PER_SECOND = 190_000
+SECONDS_PER_MEGAPIXEL = 0.15
+HATCHING_SECONDS_PER_MEGAPIXEL = 0.3  # added when hatching is on
 
 _worker = concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="kappa")
 
@@ -24,8 +28,10 @@ def kappa_or_error():
     return kappa
 
 
-def estimated_seconds(face_count):
-    return SECONDS_START + face_count / FACES_PER_SECOND
+def estimated_seconds(face_count, size, hatching):
+    """kappa's seconds a frame for this many faces at an image size (w, h), with or without hatching."""
+    per_megapixel = SECONDS_PER_MEGAPIXEL + (HATCHING_SECONDS_PER_MEGAPIXEL if hatching else 0)
+    return SECONDS_START + face_count / FACES_PER_SECOND + size[0] * size[1] / 1e6 * per_megapixel
 
 
 def in_worker(function, *args, **keywords):
@@ -50,11 +56,13 @@ class Scene:
         self.props = context.scene.kappa_lines
         self.view = scene_view.current_view(context)
         self.mesh = scene_view.SceneMesh(context)
-        seconds = estimated_seconds(self.mesh.face_count)
+        seconds = estimated_seconds(self.mesh.face_count, self.view.size, self.props.hatching != "none")
         if seconds > self.props.time_limit:
-            raise DrawError(f"kappa lines: {self.mesh.face_count:,} faces would take about {seconds:.2g} s a frame, "
-                            f"more than the time limit of {self.props.time_limit:g} s: raise it in the panel or "
-                            "decimate")
+            w, h = self.view.size
+            raise DrawError(f"kappa lines: {self.mesh.face_count:,} faces at {w}x{h} pixels would take about "
+                            f"{seconds:.2g} s a frame, "
+                            f"more than the time limit of {self.props.time_limit:g} s: raise it in the panel, decimate "
+                            "or lower the resolution")
         self.mesh.check_outside(self.view.eye)
         self.keywords = settings.keywords(self.props, self.kappa)
 
