@@ -88,10 +88,13 @@ def write_frame(obj, frame_number, strokes, eye, layer_names, pull, line_width, 
     names = list(dict.fromkeys(list(layer_names) + [layer_of(s) for s in strokes]))
     frames = {}
     for name in names:
-        layer = data.layers.get(name) or data.layers.new(name, set_active=False)
-        layer.use_lights = False
-        if name == HIDDEN_LAYER:
-            layer.opacity = HIDDEN_OPACITY
+        layer = data.layers.get(name)
+        if layer is None:
+            layer = data.layers.new(name, set_active=False)
+            layer.use_lights = False
+            if name == HIDDEN_LAYER:
+                layer.opacity = HIDDEN_OPACITY  # the user may change it after
+
         frames[name] = empty_frame(layer, frame_number)
     # Grease Pencil widths are whole pixels: the rest goes into the points' pressure.
     for s in strokes:
