@@ -16,13 +16,13 @@ Mesh mesh_from_arrays(const py::handle& V, const py::handle& F) {
     const py::array v_in = py::array::ensure(V), f_in = py::array::ensure(F);
     if (!v_in || !f_in) fail("V and F must be arrays (V: N x 3 numbers, F: M x 3 vertex indices)");
     if (v_in.ndim() != 2 || v_in.shape(1) != 3)
-        fail("V must have shape (N, 3), got " + std::string(py::str(py::make_tuple(*v_in.attr("shape")))));
+        fail("V must have shape (N, 3), got " + std::string(py::str(v_in.attr("shape"))));
     if (v_in.shape(0) == 0) fail("V is empty: the mesh has no vertices");
     const char kind = f_in.dtype().kind();
     if (f_in.size() > 0 && kind != 'i' && kind != 'u')
         fail("F must hold integers (vertex indices), got dtype " + std::string(py::str(f_in.dtype())));
     if (!(f_in.ndim() == 2 && f_in.shape(1) == 3) && f_in.size() > 0)
-        fail("F must have shape (M, 3), got " + std::string(py::str(py::make_tuple(*f_in.attr("shape")))));
+        fail("F must have shape (M, 3), got " + std::string(py::str(f_in.attr("shape"))));
     const auto v = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(v_in);
     if (!v) fail("V must hold numbers");
     Mesh mesh;

@@ -53,8 +53,8 @@ def test_bad_arrays_raise_instead_of_crashing():
         (V, np.where(F == F.max(), len(V), F), f"refers to vertex {len(V)} but V has {len(V)} vertices"),
         (V, F - 1, "refers to vertex -1"),
         (np.zeros((0, 3), np.float32), np.zeros((0, 3), np.int32), "V is empty"),
-        (V[:, :2], F, "V must have shape (N, 3)"),
-        (V, F[:, :2], "F must have shape (M, 3)"),
+        (V[:, :2], F, f"V must have shape (N, 3), got ({len(V)}, 2)"),
+        (V, F[:, :2], f"F must have shape (M, 3), got ({len(F)}, 2)"),
         (V, F.astype(np.float64), "F must hold integers"),
         ("not an array", F, "V must"),
     ]
