@@ -75,11 +75,11 @@ float MeshDrawing::prepare_view(render::Renderer& renderer, const render::Camera
     view_ = render::detail_fields(mesh, detail_source_, fields_, scales);
     view_fields_ = &view_.fields;
     if (!uploaded_) {
-        renderer.set_mesh(mesh, view_.fields, view_.feature_size, view_.fine_normals);
+        renderer.set_mesh(view_.mesh, view_.fields, view_.feature_size, view_.fine_normals);
         renderer.set_creases(render::crease_end_points(drawn_));
         uploaded_ = true;
     } else {
-        renderer.update_fields(mesh, view_.fields, view_.feature_size, view_.fine_normals);
+        renderer.update_fields(view_.mesh, view_.fields, view_.feature_size, view_.fine_normals);
     }
     return prepared_fs_ = view_.feature_size;
 }
@@ -102,8 +102,9 @@ render::VectorDrawing MeshDrawing::vectors(render::Renderer& renderer, const ren
         crease_edges_ = kappa::crease_edges(drawn_.mesh, drawn_.creases, drawn_.crease_faces);
         have_crease_edges_ = true;
     }
-    const std::vector<glm::vec3>* fine = settings_.detail > 0 ? &view_.fine_normals : nullptr;
-    const render::StrokeSource source{&drawn_.mesh, view_fields_, fine, &crease_edges_, fs};
+    const bool detail = settings_.detail > 0;
+    const std::vector<glm::vec3>* fine = detail ? &view_.fine_normals : nullptr;
+    const render::StrokeSource source{detail ? &view_.mesh : &drawn_.mesh, view_fields_, fine, &crease_edges_, fs};
     return render::draw_vector_view(renderer, camera, settings, size.x, size.y, source, underlay);
 }
 

@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
         if (detail > 0) {
             render::DetailSource source = render::make_detail_source(mesh, fields);
             const render::DetailFields d = render::detail_fields(mesh, source, fields, camera, height, detail);
-            renderer.set_mesh(mesh, d.fields, d.feature_size, d.fine_normals);
+            renderer.set_mesh(d.mesh, d.fields, d.feature_size, d.fine_normals);
         }
         std::printf("\n%s: %zu vertices, %zu faces, %s\n", path.empty() ? "built-in model" : path.c_str(),
                     mesh.vertex_count(), mesh.face_count(), detail > 0 ? "detail fields" : "raw fields");

@@ -6,11 +6,15 @@
 //   - the built-in shape on a 1.3M-face icosphere with normal noise of 0.3
 //     mean edge lengths, an irregular (jittered) 82k-face one and the
 //     default 82k-face one, each against the clean 1.3M-face drawing;
+//   - scan-like meshes: the built-in shape on irregular (jittered)
+//     tessellations of 20k, 82k and 330k faces with normal noise of 0.1,
+//     0.33 and 0.5 mean edges, each against its clean tessellation, drawn at
+//     800x800 (the 82k one has edges of about 4 px there);
 // prints the fraction of each drawing's ink within 2 px of the other's
 // (both ways), and the ink counts. Lines only (contours, suggestive),
-// 1024x768, no MSAA.
+// 1024x768 (scan-like: 800x800), no MSAA.
 //
-//   build/bench_render_detail [--details 0,4,8] [--save DIR]
+//   build/bench_render_detail [--details 0,4,8] [--save DIR] [--scans-only] [--only contours|suggestive]
 #include "geometry/mesh/default_model.h"
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
@@ -34,6 +38,8 @@ using namespace kappa;
 
 namespace {
 
+std::string g_only;  // --only contours|suggestive: one line type
+
 struct Subject {
     std::string name;
     Mesh mesh;
@@ -49,27 +55,42 @@ Subject make_subject(std::string name, Mesh mesh) {
 }
 
 render::Image draw(render::Renderer& renderer, Subject& s, const render::Camera& camera, float detail,
-                   double* seconds) {
+                   double* seconds, int width, int height) {
     render::RenderSettings settings;
     settings.shading = render::Shading::None;
     settings.msaa = false;
     settings.detail = detail;
+    if (g_only == "contours") settings.lines.suggestive = false;
+    if (g_only == "suggestive") settings.lines.contours = false;
     const auto t0 = std::chrono::steady_clock::now();
     if (detail > 0) {
-        render::DetailFields d = render::detail_fields(s.mesh, s.source, s.raw, camera, 768, detail);
-        renderer.set_mesh(s.mesh, d.fields, d.feature_size, d.fine_normals);
+        render::DetailFields d = render::detail_fields(s.mesh, s.source, s.raw, camera, height, detail);
+        renderer.set_mesh(d.mesh, d.fields, d.feature_size, d.fine_normals);
     } else {
         renderer.set_mesh(s.mesh, s.raw, feature_size(s.mesh, s.raw));
     }
     *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return render::render_to_image(renderer, camera, settings, 1024, 768);
+    return render::render_to_image(renderer, camera, settings, width, height);
 }
+
+float mean_edge(const Mesh& mesh) {
+    float edge = 0;
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) edge += glm::length(mesh.positions[f[k]] - mesh.positions[f[(k + 1) % 3]]);
+    return edge / float(3 * mesh.face_count());
+}
+
+struct Pair {
+    Subject a, b;
+    int width = 1024, height = 768;
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
     std::vector<float> details = {0, 4, 6, 8, 12};
     std::string save;
+    bool scans_only = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--details") && i + 1 < argc) {
             details.clear();
@@ -77,38 +98,57 @@ int main(int argc, char** argv) {
             for (std::string item; std::getline(list, item, ',');) details.push_back(std::stof(item));
         } else if (!std::strcmp(argv[i], "--save") && i + 1 < argc) {
             save = argv[++i];
+        } else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) {
+            g_only = argv[++i];
+        } else if (!std::strcmp(argv[i], "--scans-only")) {
+            scans_only = true;
         }
     }
     const std::string dir = std::string(KAPPA_SOURCE_DIR) + "/../shared/meshes/";
     auto context = render::HeadlessContext::create();
     render::Renderer renderer;
 
-    std::vector<std::pair<Subject, Subject>> pairs;
-    pairs.emplace_back(make_subject("bunny", load_mesh(dir + "bunny.ply")),
-                       make_subject("bunny-1M", load_mesh(dir + "bunny-1M.ply")));
-    {
+    std::vector<Pair> pairs;
+    if (!scans_only) {
+        pairs.push_back({make_subject("bunny", load_mesh(dir + "bunny.ply")),
+                         make_subject("bunny-1M", load_mesh(dir + "bunny-1M.ply"))});
         Mesh fine = make_default_model_from(make_icosphere(1.0f, 8));
         Mesh noisy = fine;
-        float edge = 0;  // mean edge length
-        for (const Face& f : fine.faces)
-            for (int k = 0; k < 3; ++k) edge += glm::length(fine.positions[f[k]] - fine.positions[f[(k + 1) % 3]]);
-        edge /= float(3 * fine.face_count());
-        add_normal_noise(noisy, 0.3f * edge, 7);
+        add_normal_noise(noisy, 0.3f * mean_edge(fine), 7);
         Subject clean = make_subject("blob-1.3M", std::move(fine));
-        pairs.emplace_back(make_subject("blob-1.3M+noise", std::move(noisy)), clean);
-        pairs.emplace_back(make_subject("blob-irregular", make_default_model_from(make_jittered_sphere(1.0f, 6, 0.8f, 3))),
-                           clean);
-        pairs.emplace_back(make_subject("blob-82k", make_default_model()), clean);
+        pairs.push_back({make_subject("blob-1.3M+noise", std::move(noisy)), clean});
+        pairs.push_back({make_subject("blob-irregular", make_default_model_from(make_jittered_sphere(1.0f, 6, 0.8f, 3))),
+                         clean});
+        pairs.push_back({make_subject("blob-82k", make_default_model()), clean});
+    }
+    for (int level : {5, 6, 7}) {  // scan-like: irregular tessellations with normal noise
+        const Mesh clean_mesh = make_default_model_from(make_jittered_sphere(1.0f, level, 0.8f, 3));
+        const Subject clean = make_subject("irr" + std::to_string(level), clean_mesh);
+        for (float noise : {0.1f, 0.33f, 0.5f}) {
+            Mesh noisy = clean_mesh;
+            add_normal_noise(noisy, noise * mean_edge(clean_mesh), 11);
+            char name[32];
+            std::snprintf(name, sizeof name, "irr%d+%.2g", level, noise);
+            pairs.push_back({make_subject(name, std::move(noisy)), clean, 800, 800});
+
+        }
     }
 
+    for (const Pair& p : pairs)
+        for (const Subject* s : {&p.a, &p.b}) {
+            const float h = mean_edge(s->mesh);
+            std::printf("%-16s denoised at %.2f edges, then noise floor %.2f, contour floor %.2f edges\n",
+                        s->name.c_str(), s->source.denoised_at / h, s->source.noise_floor / h,
+                        s->source.contour_floor / h);
+        }
     for (float detail : details) {
         std::printf("detail %g px\n", detail);
-        for (auto& [a, b] : pairs) {
+        for (auto& [a, b, width, height] : pairs) {
             const render::Camera camera =
-                render::Camera::framing(render::bounding_sphere(b.mesh), 30.0f, 1024.0f / 768.0f);
+                render::Camera::framing(render::bounding_sphere(b.mesh), 30.0f, float(width) / float(height));
             double ta = 0, tb = 0;
-            const render::Image ia = draw(renderer, a, camera, detail, &ta);
-            const render::Image ib = draw(renderer, b, camera, detail, &tb);
+            const render::Image ia = draw(renderer, a, camera, detail, &ta, width, height);
+            const render::Image ib = draw(renderer, b, camera, detail, &tb, width, height);
             std::printf("  %-16s vs %-10s  ink %7zu / %7zu   within 2 px: %5.1f%% / %5.1f%%   fields %.3f / %.3f s\n",
                         a.name.c_str(), b.name.c_str(), render::count_ink(ia), render::count_ink(ib),
                         100 * render::ink_within(ia, ib, 2), 100 * render::ink_within(ib, ia, 2), ta, tb);

@@ -47,7 +47,7 @@ render::Image draw(const Mesh& mesh, const render::Camera& camera, float detail)
     if (detail > 0) {
         render::DetailSource source = render::make_detail_source(mesh, raw);
         const render::DetailFields d = render::detail_fields(mesh, source, raw, camera, kHeight, detail);
-        r.set_mesh(mesh, d.fields, d.feature_size, d.fine_normals);
+        r.set_mesh(d.mesh, d.fields, d.feature_size, d.fine_normals);
     } else {
         r.set_mesh(mesh, raw, feature_size(mesh, raw));
     }

@@ -176,7 +176,7 @@ void ViewerApp::adopt_results() {
             render::view_scales(*model_->mesh, *model_->detail, shown_.camera, shown_.height, shown_.detail);
         if (render::needs_raw_curvature(*model_->detail, scales)) complete_fields();
         const render::DetailFields d = render::detail_fields(*model_->mesh, *model_->detail, *model_->fields, scales);
-        renderer_->set_mesh(*model_->mesh, d.fields, d.feature_size, d.fine_normals);
+        renderer_->set_mesh(d.mesh, d.fields, d.feature_size, d.fine_normals);
     } else {
         complete_fields();
         renderer_->set_mesh(*model_->mesh, *model_->fields, model_->feature_size);

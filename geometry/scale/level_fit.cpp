@@ -180,4 +180,23 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
     return out;
 }
 
+void fit_level_heights(const ClusterLevel& level, const std::vector<glm::vec3>& positions,
+                       const std::vector<float>& point_areas, ScaleLevelFields& fields) {
+    // height = mean over the cluster's vertices of n . d + II(t, t) / 2; the
+    // mean of n . d is zero at the area-weighted centroid, but is kept: the
+    // centroid's float sums round.
+    std::vector<double> sum(level.size(), 0.0), weight(level.size(), 0.0);
+    for (size_t v = 0; v < positions.size(); ++v) {
+        const uint32_t q = level.vertex_cluster[v];
+        if (q >= level.size() || !fields.valid[q] || !(point_areas[v] > 0)) continue;
+        const glm::vec3 d = positions[v] - level.centroid[q];
+        const glm::vec3& n = fields.value[q].normal;
+        sum[q] += double(point_areas[v]) * (glm::dot(n, d) + 0.5f * sym3_eval(fields.value[q].curvature, d, d));
+        weight[q] += point_areas[v];
+    }
+    fields.height.assign(level.size(), 0.0f);
+    for (size_t q = 0; q < level.size(); ++q)
+        if (weight[q] > 0) fields.height[q] = float(sum[q] / weight[q]);
+}
+
 }  // namespace kappa

@@ -37,11 +37,24 @@ struct ScaleLevelFields {
     std::vector<Value> value;
     std::vector<uint8_t> valid;     // 0 where the cluster had too little around it for a fit
     std::vector<glm::vec4> place;   // centroid, and area or 0 where not valid
+    // Where the fitted surface passes above the centroid, along the normal:
+    // the cluster's surface is n . (x - centroid) = height - II(t, t) / 2
+    // (t: the tangential part of x - centroid). Empty until fit_level_heights.
+    std::vector<float> height;
 
     bool fitted() const { return !valid.empty(); }
 };
 
 ScaleLevelFields fit_level(const ClusterLevel& level);
+
+// Fills fields.height: the offset that makes each cluster's quadric
+// (normal and II of the fit) pass through its vertices in the area-weighted
+// least-squares sense. The centroid of a curved patch lies inside it (by
+// about II r^2 / 4 over a patch of radius r): without the offset, surfaces
+// drawn from the fits would shrink. positions and point_areas: the mesh's,
+// one per vertex. One thread; O(V).
+void fit_level_heights(const ClusterLevel& level, const std::vector<glm::vec3>& positions,
+                       const std::vector<float>& point_areas, ScaleLevelFields& fields);
 
 // The smooth kernel of the fits and of the per-vertex blend: area x
 // (1 - d^2 / R^2)^2 within R, a bump close to a Gaussian of sigma = R / 2.5,

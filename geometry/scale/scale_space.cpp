@@ -22,13 +22,23 @@ struct LevelValue {
     glm::vec3 normal_sum{0.0f};
     Sym3 curvature;
     SymCubic3 dcurv;
+    // Positions: the weighted sum of the moves that bring the vertex onto
+    // each cluster's fitted surface, over the clusters facing the vertex's
+    // own (not the far side of a thin sheet); shift() finishes it.
+    float shift_weight = 0;
+    glm::vec3 shift_sum{0.0f};
+    glm::vec3 shift() const { return shift_weight > 0 ? shift_sum / shift_weight : glm::vec3(0.0f); }
 };
 
+// What a blend computes besides the normal.
+enum class Blend { Normals, Positions, Tensors };
+
 // Returns false when no cluster around the vertex has a fit.
-template <bool kTensors>
+template <Blend kBlend>
 bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint32_t vertex, const glm::vec3& p,
                  LevelValue& out) {
     const uint32_t home = level.vertex_cluster[vertex];
+    const glm::vec3 facing = fields.value[home].normal;
     const float r = kPushRadius * level.cell, inv_r2 = 1.0f / (r * r);
     out = LevelValue{};
     // Each cluster's value is carried from its centroid to the vertex to
@@ -39,7 +49,13 @@ bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint
         const glm::vec3 d = p - glm::vec3(fields.place[q]);
         out.weight += w;
         out.normal_sum += w * (s.normal + apply(s.curvature, d));
-        if (kTensors) {
+        if (kBlend == Blend::Positions && glm::dot(s.normal, facing) > 0) {
+            // The cluster's surface: n . (x - c) = height - II(t, t) / 2.
+            const float above = glm::dot(s.normal, d) - (fields.height[q] - 0.5f * sym3_eval(s.curvature, d, d));
+            out.shift_weight += w;
+            out.shift_sum -= w * above * s.normal;
+        }
+        if (kBlend == Blend::Tensors) {
             add_scaled(out.curvature, w, s.curvature);
             add_scaled(out.curvature, w, contract(s.dcurv, d));
             add_scaled(out.dcurv, w, s.dcurv);
@@ -78,7 +94,7 @@ struct VertexBlend {
 
 // Fills `b` for vertex v at scale sigma; returns false where the raw fields
 // are kept as they are (flagged vertex, sigma at or below the raw scale).
-template <bool kTensors>
+template <Blend kBlend>
 bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw, size_t v, float sigma,
                   VertexBlend& b) {
     if (space.levels.empty() || raw.unreliable(v) || !(sigma > space.raw_scale)) return false;
@@ -93,7 +109,7 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
         b.use[i] = false;
         if (b.share[i] <= 0.0f) continue;
         if (l >= 0 && space.levels[size_t(l)].fitted() &&
-            level_value<kTensors>(space.clusters[size_t(l)], space.levels[size_t(l)], uint32_t(v),
+            level_value<kBlend>(space.clusters[size_t(l)], space.levels[size_t(l)], uint32_t(v),
                                   mesh.positions[v], b.value[i])) {
             b.use[i] = true;
             n += b.share[i] * glm::normalize(b.value[i].normal_sum);
@@ -123,6 +139,10 @@ void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& ra
                 build_surface_clusters(mesh, raw.point_areas, raw.normals, space.origin, space.level_scale(i));
     }, 1);
     for (size_t i : todo) space.levels[i] = fit_level(space.clusters[i]);
+    parallel_for(todo.size(), [&](size_t k) {
+        const size_t i = todo[k];
+        fit_level_heights(space.clusters[i], mesh.positions, raw.point_areas, space.levels[i]);
+    }, 1);
 }
 
 void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, const std::vector<float>& sigma) {
@@ -199,7 +219,7 @@ SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const Surface
     }
     parallel_for(mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
-        if (!blend_vertex<true>(mesh, space, raw, v, sigma[v], b)) return;
+        if (!blend_vertex<Blend::Tensors>(mesh, space, raw, v, sigma[v], b)) return;
         Sym3 tensor;
         SymCubic3 dcurv;
         for (int i = 0; i < 2; ++i) {
@@ -229,7 +249,27 @@ std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, con
     std::vector<glm::vec3> out = raw.normals;
     parallel_for(mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
-        if (blend_vertex<false>(mesh, space, raw, v, sigma[v], b)) out[v] = b.normal;
+        if (blend_vertex<Blend::Normals>(mesh, space, raw, v, sigma[v], b)) out[v] = b.normal;
+    }, 2048);
+    return out;
+}
+
+SurfaceAtScale surface_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
+                                const std::vector<float>& sigma) {
+    fit_levels_for(mesh, space, raw, sigma);
+    SurfaceAtScale out{mesh.positions, raw.normals};
+    parallel_for(mesh.vertex_count(), [&](size_t v) {
+        VertexBlend b;
+        if (!blend_vertex<Blend::Positions>(mesh, space, raw, v, sigma[v], b)) return;
+        out.normals[v] = b.normal;
+        glm::vec3 shift(0.0f);  // the raw estimate's share stays where it is
+        for (int i = 0; i < 2; ++i)
+            if (b.use[i]) shift += b.share[i] * b.value[i].shift();
+        // Never further than the scale itself: a vertex keeps to its own
+        // neighbourhood whatever a poor fit says.
+        const float len = glm::length(shift);
+        if (len > sigma[v]) shift *= sigma[v] / len;
+        if (std::isfinite(len)) out.positions[v] += shift;
     }, 2048);
     return out;
 }

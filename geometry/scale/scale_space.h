@@ -79,6 +79,18 @@ SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const Surface
 std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
                                         const std::vector<float>& sigma);
 
+// The surface at scale sigma[v]: the normals of normals_at_scale and the
+// positions, each vertex moved along the fitted normals onto the fitted
+// surfaces of its levels (each cluster's quadric, level_fit.h's height),
+// blended as the normals are (the raw estimate's share does not move), by at
+// most sigma[v]. A smoothing without shrinkage: a sphere keeps its radius.
+// Where sigma[v] <= raw_scale, and at flagged vertices, the mesh's own.
+struct SurfaceAtScale {
+    std::vector<glm::vec3> positions, normals;
+};
+SurfaceAtScale surface_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
+                                const std::vector<float>& sigma);
+
 // The same with one sigma for every vertex.
 SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, float sigma);
 
