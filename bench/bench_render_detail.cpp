@@ -15,9 +15,11 @@
 // 1024x768 (scan-like: 800x800), no MSAA.
 //
 //   build/bench_render_detail [--details 0,4,8] [--save DIR] [--scans-only] [--only contours|suggestive]
+//                            [--write-meshes DIR]   (also writes the scan-like meshes as PLY, for kappa render)
 #include "geometry/mesh/default_model.h"
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
+#include "geometry/io/ply_io.h"
 #include "geometry/mesh/primitives.h"
 #include "geometry/surface_analysis.h"
 #include "render/fields/detail_fields.h"
@@ -91,6 +93,7 @@ int main(int argc, char** argv) {
     std::vector<float> details = {0, 4, 6, 8, 12};
     std::string save;
     bool scans_only = false;
+    std::string write_meshes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--details") && i + 1 < argc) {
             details.clear();
@@ -98,6 +101,8 @@ int main(int argc, char** argv) {
             for (std::string item; std::getline(list, item, ',');) details.push_back(std::stof(item));
         } else if (!std::strcmp(argv[i], "--save") && i + 1 < argc) {
             save = argv[++i];
+        } else if (!std::strcmp(argv[i], "--write-meshes") && i + 1 < argc) {
+            write_meshes = argv[++i];
         } else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) {
             g_only = argv[++i];
         } else if (!std::strcmp(argv[i], "--scans-only")) {
@@ -136,6 +141,7 @@ int main(int argc, char** argv) {
 
     for (const Pair& p : pairs)
         for (const Subject* s : {&p.a, &p.b}) {
+            if (!write_meshes.empty() && p.width == 800) write_ply(write_meshes + "/" + s->name + ".ply", s->mesh, s->raw);
             const float h = mean_edge(s->mesh);
             std::printf("%-16s denoised at %.2f edges, then noise floor %.2f, contour floor %.2f edges\n",
                         s->name.c_str(), s->source.denoised_at / h, s->source.noise_floor / h,

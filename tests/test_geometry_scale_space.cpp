@@ -222,6 +222,49 @@ TEST_CASE("Larger scales smooth scan-like noise away", "[scale-space]") {
     CHECK(previous < 0.05);  // measured 0.012 at 16 edges; raw 6.7
 }
 
+TEST_CASE("The surface at a scale keeps a sphere's radius and takes scan noise away", "[scale-space]") {
+    // surface_at_scale moves each vertex onto its levels' fitted quadrics,
+    // each raised by its height (level_fit.h) over its centroid, which lies
+    // inside a curved patch: without the height the sphere would shrink.
+    const float R = 2.0f;
+    const Mesh clean = make_jittered_sphere(R, 5, 0.6f, 9);
+    const float h = mean_edge_length(clean);
+    Mesh noisy = clean;
+    add_normal_noise(noisy, 0.33f * h, 5);
+    for (const Mesh* mesh : {&clean, static_cast<const Mesh*>(&noisy)}) {
+        const SurfaceFields raw = compute_surface_normals(*mesh);
+        ScaleSpace space = build_scale_space(*mesh);
+        for (float edges : {0.25f, 4.0f, 12.0f}) {
+            const std::vector<float> sigma(mesh->vertex_count(), edges * h);
+            const SurfaceAtScale s = surface_at_scale(*mesh, space, raw, sigma);
+            double sum = 0, rms_before = 0, largest = 0;
+            for (size_t v = 0; v < mesh->vertex_count(); ++v) {
+                const double e = glm::length(s.positions[v]) - R, before = glm::length(mesh->positions[v]) - R;
+                sum += e, rms_before += before * before;
+                largest = std::max(largest, double(glm::length(s.positions[v] - mesh->positions[v])));
+                CHECK(glm::dot(s.normals[v], s.positions[v]) > 0);
+            }
+            double rms = 0;
+            const double mean = sum / double(mesh->vertex_count());
+            for (size_t v = 0; v < mesh->vertex_count(); ++v)
+                rms += std::pow(glm::length(s.positions[v]) - R - mean, 2);
+            rms = std::sqrt(rms / double(mesh->vertex_count()));
+            rms_before = std::sqrt(rms_before / double(mesh->vertex_count()));
+            INFO((mesh == &clean ? "clean" : "noisy") << ", sigma " << edges << " edges: mean radius error "
+                 << mean / h << " edges, RMS about it " << rms / h << " (before " << rms_before / h
+                 << "), largest move " << largest / h);
+            CHECK(largest <= edges * h * 1.0001);  // never further than the scale
+            if (edges < 0.5f) {
+                CHECK(largest == 0);  // below the raw scale: the mesh's own positions
+                continue;
+            }
+            CHECK(std::fabs(mean) < 0.02 * h);  // no shrinkage
+            if (mesh == &noisy) CHECK(rms < 0.1 * h);   // the noise (0.33 edges) is gone
+            else CHECK(rms < 0.01 * h);
+        }
+    }
+}
+
 TEST_CASE("Fields at a scale do not depend on the thread count", "[scale-space]") {
     Mesh mesh = make_torus(1.0f, 0.3f, 150, 50);
     add_normal_noise(mesh, 0.002f, 4);
