@@ -264,16 +264,18 @@ TEST_CASE("Noisy scan-like meshes draw their clean shape's lines, where it is dr
     // 0.33 mean edges, drawn with edges of about 4 px (20k faces at 400 px,
     // 82k at 800 px), against the same tessellation without noise. Noisy
     // meshes are drawn denoised at the noise floor (detail_fields.h).
-    // Measured (bench/bench_render_detail for 82k; before -> after):
-    //   82k,  0.1 edges: 88.6% / 87.1% -> 95.4% / 95.4%
-    //   82k, 0.33 edges: 71.2% / 56.0% -> 78.3% / 79.2% (short of the 90% wanted: see the README of the branch)
-    //   20k at 400 px: printed by INFO below.
+    // Measured 2026-11-27 (a / b: noisy ink near the clean drawing's, and
+    // the other way; before -> after this test came in):
+    //   82k at 800 px, 0.1 edges: 88.6% / 87.1% -> 95.5% / 95.4%
+    //   82k at 800 px, 0.33 edges: 71.2% / 56.0% -> 85.5% / 87.5% (the 90% wanted is not reached:
+    //     the contours agree to 99% / 98%, the suggestive contours to about 70%)
+    //   20k at 400 px, 0.1 edges: 97.9% / 95.0%; 0.33 edges: 90.1% / 84.2%
     struct Case {
         int levels, size;
         float noise;
         double bound;
     };
-    const Case cases[] = {{6, 800, 0.1f, 0.92}, {6, 800, 0.33f, 0.74}, {5, 400, 0.1f, 0.0}, {5, 400, 0.33f, 0.0}};
+    const Case cases[] = {{6, 800, 0.1f, 0.92}, {6, 800, 0.33f, 0.82}, {5, 400, 0.1f, 0.92}, {5, 400, 0.33f, 0.8}};
     for (const Case& c : cases) {
         const Mesh clean = scan_like(c.levels, 0), noisy = scan_like(c.levels, c.noise);
         const render::Camera camera = render::Camera::framing(render::bounding_sphere(clean), 30.0f, 1.0f);
