@@ -47,12 +47,15 @@ struct Subject {
     Mesh mesh;
     SurfaceFields raw;
     render::DetailSource source;
+    double prepare_s = 0;  // make_detail_source (with the denoising of noisy meshes)
 };
 
 Subject make_subject(std::string name, Mesh mesh) {
     Subject s{std::move(name), std::move(mesh), {}, {}};
     s.raw = compute_surface_fields(s.mesh);
+    const auto t0 = std::chrono::steady_clock::now();
     s.source = render::make_detail_source(s.mesh, s.raw);
+    s.prepare_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return s;
 }
 
@@ -143,9 +146,9 @@ int main(int argc, char** argv) {
         for (const Subject* s : {&p.a, &p.b}) {
             if (!write_meshes.empty() && p.width == 800) write_ply(write_meshes + "/" + s->name + ".ply", s->mesh, s->raw);
             const float h = mean_edge(s->mesh);
-            std::printf("%-16s denoised at %.2f edges, then noise floor %.2f, contour floor %.2f edges\n",
+            std::printf("%-16s denoised at %.2f edges, then noise floor %.2f, contour floor %.2f edges; %.3f s\n",
                         s->name.c_str(), s->source.denoised_at / h, s->source.noise_floor / h,
-                        s->source.contour_floor / h);
+                        s->source.contour_floor / h, s->prepare_s);
         }
     for (float detail : details) {
         std::printf("detail %g px\n", detail);

@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
     });
     bench::time_it("fields at scale (fitted)", runs, [&] { (void)fields_at_scale(mesh, space, raw, sigma); });
     bench::time_it("normals at scale", runs, [&] { (void)normals_at_scale(mesh, space, raw, sigma); });
+    bench::time_it("surface at scale (positions too)", runs, [&] { (void)surface_at_scale(mesh, space, raw, sigma); });
 
     // The budget of issue 9: the fields of kappa render's default view at the
     // default detail (what render/fields/detail_fields.cpp does, without GL), against
