@@ -266,10 +266,10 @@ TEST_CASE("Noisy scan-like meshes draw their clean shape's lines, where it is dr
     // meshes are drawn denoised at the noise floor (detail_fields.h).
     // Measured 2026-11-27 (a / b: noisy ink near the clean drawing's, and
     // the other way; before -> after this test came in):
-    //   82k at 800 px, 0.1 edges: 88.6% / 87.1% -> 95.5% / 95.4%
-    //   82k at 800 px, 0.33 edges: 71.2% / 56.0% -> 85.5% / 87.5% (the 90% wanted is not reached:
+    //   82k at 800 px, 0.1 edges: 88.6% / 87.1% -> 95.4% / 95.4%
+    //   82k at 800 px, 0.33 edges: 71.2% / 56.0% -> 85.0% / 86.8% (the 90% wanted is not reached:
     //     the contours agree to 99% / 98%, the suggestive contours to about 70%)
-    //   20k at 400 px, 0.1 edges: 97.9% / 95.0%; 0.33 edges: 90.1% / 84.2%
+    //   20k at 400 px, 0.1 edges: 96.9% / 94.0%; 0.33 edges: 89.0% / 82.3%
     struct Case {
         int levels, size;
         float noise;

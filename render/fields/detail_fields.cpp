@@ -42,12 +42,15 @@ namespace {
 // 10%, and denoising brings its drawings from 89% to 95% on 82k faces.
 constexpr float kDenoiseNoise = 0.085f;
 
+// Denoising at the noise floor F runs in passes, each fitting on the
+// normals of the last pass's cleaner surface, at the scale of the scale
+// space's level 1 (3 mean edges: one level fitted a pass), as many as make
+// the variances add up to about F^2 (one pass at F below 1.22 x 3 edges).
 // Measured on bench_render_detail's irregular 82k-face shape with noise of
 // 0.33 edges at 800 px, agreement with the clean drawing: one pass at F
-// 78% / 79%, at F / 2 or 2F worse (53-65%); two passes 85% / 87%; three
-// 86% / 88% (0.5 edges of noise: 77% / 79% with two, 81% / 84% with three);
-// four or six no better.
-constexpr int kDenoisePasses = 3;
+// 78% / 79%, at F / 2 or 2F worse (53-65%); two passes at level 1 85% / 87%,
+// as three at F / sqrt(3) (86% / 88%, twice the time); more passes no better.
+constexpr int kDenoiseLevel = 1;
 
 NoiseLevel set_floors(DetailSource& source, const Mesh& mesh, const SurfaceFields& raw, const VertexFaces& adjacency) {
     const NoiseLevel noise = estimate_noise_level(mesh, adjacency, raw.normals);
@@ -65,13 +68,13 @@ DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw, cons
     source.space = build_scale_space(mesh);
     const NoiseLevel noise = set_floors(source, mesh, raw, *adjacency);
     if (noise.relative >= kDenoiseNoise && source.noise_floor > 0 && !source.space.empty()) {
-        // Denoised at the noise floor F, in kDenoisePasses passes at
-        // F / sqrt(passes) (the kernels' variances add up to F^2), each pass
-        // fitting on the normals of the last one's cleaner surface.
         source.denoised_at = source.noise_floor;
         source.denoised.faces = mesh.faces;
-        const std::vector<float> sigma(mesh.vertex_count(), source.noise_floor / std::sqrt(float(kDenoisePasses)));
-        for (int pass = 0; pass < kDenoisePasses; ++pass) {
+        const float level = source.space.level_scale(kDenoiseLevel);
+        const float variances = source.noise_floor * source.noise_floor / (level * level);
+        const int passes = std::max(1, int(std::lround(variances)));
+        const std::vector<float> sigma(mesh.vertex_count(), passes == 1 ? source.noise_floor : level);
+        for (int pass = 0; pass < passes; ++pass) {
             const bool first = pass == 0;
             source.denoised.positions =
                 surface_at_scale(first ? mesh : source.denoised, source.space, first ? raw : source.denoised_raw,
