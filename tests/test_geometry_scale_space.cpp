@@ -272,14 +272,18 @@ TEST_CASE("Fields at a scale do not depend on the thread count", "[scale-space]"
     std::vector<float> sigma(mesh.vertex_count());
     for (size_t v = 0; v < sigma.size(); ++v) sigma[v] = 0.005f + 0.05f * (mesh.positions[v].x + 1.5f);  // varies
     SurfaceFields out[3];
+    SurfaceAtScale surface[3];
     const unsigned threads[] = {1, 2, 5};
     for (int i = 0; i < 3; ++i) {
         set_thread_count(threads[i]);
         ScaleSpace space = build_scale_space(mesh);
         out[i] = fields_at_scale(mesh, space, raw, sigma);
+        surface[i] = surface_at_scale(mesh, space, raw, sigma);
     }
     set_thread_count(0);
     for (int i = 1; i < 3; ++i) {
+        CHECK(surface[i].positions == surface[0].positions);
+        CHECK(surface[i].normals == surface[0].normals);
         CHECK(out[i].normals == out[0].normals);
         CHECK(out[i].k1 == out[0].k1);
         CHECK(out[i].k2 == out[0].k2);

@@ -308,6 +308,7 @@ TEST_CASE("On a noisy mesh every line path draws the contour on the drawn silhou
     const render::Camera camera = render::Camera::framing(render::bounding_sphere(noisy), 30.0f, 1.0f);
     const SurfaceFields raw = compute_surface_fields(noisy);
     render::DetailSource source = render::make_detail_source(noisy, raw);
+    CHECK(source.denoised_at > 2 * mean_edge_length(noisy));  // denoised at the noise floor (measured 3.9 edges)
     const render::DetailFields d = render::detail_fields(noisy, source, raw, camera, size, 12.0f);
     double moved = 0;
     for (size_t v = 0; v < noisy.vertex_count(); ++v)
