@@ -70,18 +70,18 @@ int main(int argc, char** argv) {
     bench::time_it("fields at scale", runs, [&] { view.fields = fields_at_scale(mesh, source.space, raw, scales.sigma); });
     bench::time_it("feature size", runs, [&] { (void)feature_size(mesh, view.fields); });
     bench::time_it("upload, CPU half", runs, [&] {
-        (void)render::prepare_field_upload(mesh, view.fields, view.feature_size, view.fine_normals, clusters, true);
+        (void)render::prepare_field_upload(view.mesh, view.fields, view.feature_size, view.fine_normals, clusters, true);
     });
 
     bench::time_it("first view (levels fit)", runs, [&] {
         render::DetailSource fresh = render::make_detail_source(mesh, raw, &adjacency);
         const render::DetailFields d = render::detail_fields(mesh, fresh, raw, camera, height, detail);
-        (void)render::prepare_field_upload(mesh, d.fields, d.feature_size, d.fine_normals, clusters, true);
+        (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters, true);
     });
     bench::time_it("new view (levels fitted)", runs, [&] {
         next_view();
         const render::DetailFields d = render::detail_fields(mesh, source, raw, camera, height, detail);
-        (void)render::prepare_field_upload(mesh, d.fields, d.feature_size, d.fine_normals, clusters, true);
+        (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters, true);
     });
     return 0;
 }
