@@ -1,5 +1,6 @@
 #include "cli_options.h"
 
+#include "geometry/io/float_chars.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/parallel/parallel.h"
 
@@ -37,7 +38,7 @@ std::optional<double> parse_number(std::string_view text) {
         if (text.empty() || text.front() == '-') return std::nullopt;
     }
     double v = 0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    auto [end, ec] = io::float_from_chars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
     return v;
 }

@@ -25,12 +25,8 @@ void add_render_options(cli::Parser& p, RenderOptions& o) {
                 "0,0,1: 0 = from -y, 90 = from +x) (default: a three-quarter view chosen per mesh, "
                 "docs/rendering.md, 'The default view')",
                 [&c](const std::string& v) {
-                    const auto parts = cli::split(v, ',');
-                    if (parts.size() != 2) return false;
-                    const auto az = cli::parse_number(parts[0]), el = cli::parse_number(parts[1]);
-                    if (!az || !el || !std::isfinite(*az) || !(std::fabs(*el) <= 90)) return false;
-                    c.view = ViewAngles{float(*az), float(*el)};
-                    return true;
+                    c.view = parse_view_angles(v);
+                    return c.view.has_value();
                 },
                 "two numbers AZ,EL in degrees, EL in [-90, 90]")
         .vec3("--eye", c.eye, "camera position; without --target, only its direction counts and the model stays "
@@ -53,6 +49,14 @@ void add_render_options(cli::Parser& p, RenderOptions& o) {
                  a.expects);
     }
     p.smoothing(o.smoothing);
+}
+
+std::optional<ViewAngles> parse_view_angles(const std::string& text) {
+    const auto parts = cli::split(text, ',');
+    if (parts.size() != 2) return std::nullopt;
+    const auto az = cli::parse_number(parts[0]), el = cli::parse_number(parts[1]);
+    if (!az || !el || !std::isfinite(*az) || !(std::fabs(*el) <= 90)) return std::nullopt;
+    return ViewAngles{float(*az), float(*el)};
 }
 
 void finish_render_options(const cli::Parser& p, RenderOptions& o) {

@@ -43,6 +43,9 @@ struct RenderOptions {
 // settings and the curvature options (--estimator, --smooth*) on `p`.
 void add_render_options(cli::Parser& p, RenderOptions& options);
 
+// --view's "AZ,EL": degrees, the elevation in [-90, 90]; nullopt otherwise.
+std::optional<ViewAngles> parse_view_angles(const std::string& text);
+
 // After p.parse: records which camera options were given and checks them
 // together (throws cli::UsageError "kappa CMD: problem"). Explicit smoothing
 // widths and estimators other than the default turn --detail off

@@ -20,10 +20,26 @@ Renderer::Renderer() {
     cpu_line_raster_ = software_gl_;
     cpu_surface_depth_ = software_gl_;
     hatching_in_surface_ = software_gl_;
+    if (kGles) {
+        // OpenGL ES 3.0 (WebGL2, gles_compat.h): the lines from the CPU drawn as GL quads, which test the
+        // surface's depth texture (ES cannot read depth back for the CPU raster); shader hatching in the
+        // surface pass (no multiple-target blits).
+        cpu_line_raster_ = false;
+        cpu_surface_depth_ = false;
+        hatching_in_surface_ = true;
+    }
+}
+
+std::vector<float> Renderer::surface_depth() const {
+    if (cpu_depth_) return *cpu_depth_;
+    // ES cannot read depth back: the last frame's surface drawn again on the CPU.
+    if (kGles) return mesh_ ? depth_raster_.draw(*mesh_, last_frame_, back_face_culling_) : std::vector<float>();
+    return surface_fb_.read_depth();
 }
 Renderer::~Renderer() = default;
 
 LineExtraction Renderer::line_path(const RenderSettings& s) const {
+    if (kGles) return LineExtraction::Cpu;  // no geometry or compute shaders in ES 3.0
     const bool compute = line_pass_.compute_available();
     switch (s.line_extraction) {
         case LineExtraction::Cpu: return LineExtraction::Cpu;
@@ -108,6 +124,7 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     FrameParams frame;
     if (mesh_) {
         frame = FrameParams::make(camera, mesh_->bounds(), w, h);
+        last_frame_ = frame;
         if (any_lines && cpu_lines) line_pass_.begin_cpu_lines(*mesh_, frame, s);  // made while the surface is drawn
         cpu_depth_ = depth_on_cpu ? &depth_raster_.draw(*mesh_, frame, back_face_culling_) : nullptr;
         if (!depth_on_cpu) {
@@ -145,14 +162,16 @@ FrameParams Renderer::draw_surface_and_lines(const Camera& camera, const RenderS
     // On software GL the CPU draws its own lines too, and the hatching
     // strokes with them (render/lines/line_raster.h).
     const std::vector<WindowSegment> strokes = stroke_window_segments(hatching, s.hatch_stroke_width, frame), none;
+    // On OpenGL ES (no geometry stage for the stroke pass) the CPU line pass draws them as its quads.
     const bool cpu_raster = cpu_line_raster_ && cpu_lines;
-    if (any_lines || (cpu_raster && !strokes.empty()))
+    const bool strokes_with_lines = cpu_raster || kGles;
+    if (any_lines || (strokes_with_lines && !strokes.empty()))
         ink_ = line_pass_.draw(*mesh_, frame, s, path, surface_fb_.depth_texture(),
-                               cpu_line_raster_ ? lines_fb_.color_texture() : 0, cpu_raster ? strokes : none,
+                               cpu_line_raster_ ? lines_fb_.color_texture() : 0, strokes_with_lines ? strokes : none,
                                cpu_depth_);
     else
         ink_ = InkArea(), line_pass_.clear_gpu_times();
-    if (!cpu_raster && !strokes.empty()) {
+    if (!strokes_with_lines && !strokes.empty()) {
         stroke_pass_.draw(strokes, frame, surface_fb_.depth_texture());
         ink_.anywhere = true;
     }

@@ -46,7 +46,7 @@ public:
 
     // The surface depth of the last frame drawn (window depth, 1 = background,
     // bottom row first): what the line passes test visibility against.
-    std::vector<float> surface_depth() const { return cpu_depth_ ? *cpu_depth_ : surface_fb_.read_depth(); }
+    std::vector<float> surface_depth() const;
 
     // Draws one view offscreen, the lines blended over the surface in its own
     // framebuffer (offscreen_framebuffer(), to copy from); render_image also
@@ -132,7 +132,8 @@ private:
     bool cpu_surface_depth_ = false;  // software_gl_ unless set_cpu_surface_depth
     bool hatching_in_surface_ = false;  // software_gl_ unless set_hatching_in_surface
     bool back_face_culling_ = true;
-    DepthRaster depth_raster_;
+    mutable DepthRaster depth_raster_;  // surface_depth() draws with it on OpenGL ES
+    FrameParams last_frame_;
     const std::vector<float>* cpu_depth_ = nullptr;  // the last frame's surface depth when drawn on the CPU (in depth_raster_)
 };
 

@@ -11,6 +11,7 @@ PACKAGES=(
   librsvg2-bin poppler-utils inkscape
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-dask
   blender
+  emscripten nlohmann-json3-dev chromium
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -28,7 +28,11 @@ KAPPA_LANES_INLINE void face_geometry(const Mesh& mesh, size_t first, FaceRecord
         if constexpr (kLanes<D> == 1) {
             std::memcpy(&index_bits[c], &mesh.faces[first][c], 4);
         } else {
-            for (int j = 0; j < kLanes<D>; ++j) std::memcpy(&index_bits[c][j], &mesh.faces[first + j][c], 4);
+            for (int j = 0; j < kLanes<D>; ++j) {  // through a float: clang takes no address of a lane
+                float bits;
+                std::memcpy(&bits, &mesh.faces[first + j][c], 4);
+                index_bits[c][j] = bits;
+            }
         }
     }
     const Vec3<D> e[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]};  // e[j] opposite corner j

@@ -2,6 +2,7 @@
 // order, so the output does not depend on the thread count.
 #include "csv_io.h"
 
+#include "geometry/io/float_chars.h"
 #include "geometry/parallel/parallel.h"
 #include "field_columns.h"
 #include "output_file.h"
@@ -28,7 +29,7 @@ void format_rows(const Mesh& mesh, const SurfaceFields& fields, size_t begin, si
         field_row(mesh, fields, i, row);
         for (size_t k = 0; k < kFieldColumnCount; ++k) {
             // + 0.0f turns -0 into 0: a zero is written as 0, never -0.
-            p = std::to_chars(p, limit, row[k] + 0.0f, std::chars_format::general, 9).ptr;
+            p = float_to_chars(p, limit, row[k] + 0.0f, 9);
             *p++ = k + 1 < kFieldColumnCount ? ',' : '\n';
         }
     }

@@ -3,10 +3,12 @@
 // `list uchar int vertex_indices`. Written in 1 MiB chunks.
 #include "ply_io.h"
 
+
 #include "byte_order.h"
 #include "field_columns.h"
 #include "output_file.h"
 
+#include "geometry/io/float_chars.h"
 #include "geometry/parallel/parallel.h"
 
 #include <algorithm>
@@ -58,8 +60,7 @@ std::string ply_header(const Mesh& mesh, const SurfaceFields& fields, bool binar
 // Shortest representation that reads back to the same float (0, never -0).
 void append_number(std::string& out, float value) {
     char buffer[32];
-    auto result = std::to_chars(buffer, buffer + sizeof buffer, value + 0.0f);
-    out.append(buffer, result.ptr);
+    out.append(buffer, float_to_chars(buffer, buffer + sizeof buffer, value + 0.0f));
 }
 
 void append_number(std::string& out, uint32_t value) {

@@ -3,6 +3,8 @@
 // with std::from_chars: locale-independent, no iostreams, exact rounding.
 #pragma once
 
+#include "geometry/io/float_chars.h"
+
 #include <charconv>
 #include <cstdint>
 #include <cstdlib>
@@ -88,7 +90,10 @@ inline bool parse_number(std::string_view token, T& out) {
         if (first < last && *first == '-') return false;
     }
     if (first == last) return false;
-    auto [ptr, ec] = std::from_chars(first, last, out);
+    auto [ptr, ec] = [&] {
+        if constexpr (std::is_floating_point_v<T>) return float_from_chars(first, last, out);
+        else return std::from_chars(first, last, out);
+    }();
     if (ptr != last) return false;
     if (ec == std::errc()) return true;
     if constexpr (std::is_floating_point_v<T>) {

@@ -147,10 +147,23 @@ void append_boundary_segments(const Mesh& mesh, const std::vector<glm::uvec2>& e
     }
 }
 
+void append_crease_segments(const std::vector<CreaseEdge>& creases, glm::vec3 eye, const LineExtractionOptions& o,
+                            ExtractedLines& lines) {
+    if (!o.creases && !o.contours) return;
+    for (const CreaseEdge& c : creases) {
+        const glm::vec3 a = c.a, b = c.b, na = c.normal_a, nb = c.normal_b;
+        // As crease_geom.glsl: a face is turned towards the eye when it is at either end.
+        const bool front_a = glm::dot(na, eye - a) > 0 || glm::dot(na, eye - b) > 0;
+        const bool front_b = glm::dot(nb, eye - a) > 0 || glm::dot(nb, eye - b) > 0;
+        const LineSegment s{a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)};
+        if (o.creases && (front_a || front_b || o.hidden_creases)) lines[int(LineType::Crease)].push_back(s);
+        else if (o.contours && front_a != front_b) lines[int(LineType::Contour)].push_back(s);
+    }
+}
+
 ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, const ViewQuantities& q, glm::vec3 eye,
                              const std::vector<CreaseEdge>& creases, const LineExtractionOptions& o) {
     ExtractedLines lines;
-    auto& contours = lines[int(LineType::Contour)];
     const bool view_lines = o.contours || o.suggestive || o.suggestive_highlights || o.dwkr;
     const bool curvature_lines = o.parabolic || o.mean_zero || o.ridges || o.valleys;
     const LevelValues levels = level_values(mesh, fields, o);
@@ -171,16 +184,7 @@ ExtractedLines extract_lines(const Mesh& mesh, const SurfaceFields& fields, cons
                                 lines[int(LineType::PrincipalHighlight)]);
     }
     if (o.boundaries) append_boundary_segments(mesh, boundary_edges(mesh, fields.flags), lines[int(LineType::Boundary)]);
-    if (o.creases || o.contours)
-        for (const CreaseEdge& c : creases) {
-            const glm::vec3 a = c.a, b = c.b, na = c.normal_a, nb = c.normal_b;
-            // As crease_geom.glsl: a face is turned towards the eye when it is at either end.
-            const bool front_a = glm::dot(na, eye - a) > 0 || glm::dot(na, eye - b) > 0;
-            const bool front_b = glm::dot(nb, eye - a) > 0 || glm::dot(nb, eye - b) > 0;
-            const LineSegment s{a, b, 1, 1, 1, 1, 0.5f * glm::distance(a, b)};
-            if (o.creases && (front_a || front_b || o.hidden_creases)) lines[int(LineType::Crease)].push_back(s);
-            else if (o.contours && front_a != front_b) contours.push_back(s);
-        }
+    append_crease_segments(creases, eye, o, lines);
     return lines;
 }
 

@@ -126,6 +126,12 @@ void extract_view_lines_of_face(const Mesh& mesh, const Face& face, const Surfac
                                 const ViewQuantities& quantities, const LineExtractionOptions& options,
                                 ExtractedLines& lines);
 
+// The segments of sharp edges seen from `eye`: with o.creases those turned towards it (every one with
+// o.hidden_creases), with o.contours those between a face turned towards it and one turned away, as
+// contours (as shaders/lines/crease_geom.glsl). Appended to `lines`.
+void append_crease_segments(const std::vector<CreaseEdge>& creases, glm::vec3 eye, const LineExtractionOptions& options,
+                            ExtractedLines& lines);
+
 // Edges used by exactly one face, as vertex pairs (a < b), sorted. With flags,
 // only edges between two kFlagBoundary vertices are considered.
 std::vector<glm::uvec2> boundary_edges(const Mesh& mesh, const std::vector<uint8_t>& flags);

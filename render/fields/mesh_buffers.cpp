@@ -161,6 +161,7 @@ void MeshBuffers::set_creases(const std::vector<glm::vec3>& end_points) {
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(end_points.size() * sizeof(glm::vec3)), end_points.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
     creases_ = end_points.size() / 6;
+    cpu_creases_ = crease_edges_of(end_points);
 }
 
 void MeshBuffers::draw_creases() const {

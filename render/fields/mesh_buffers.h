@@ -62,6 +62,8 @@ public:
     // two faces (3 vec3 each, 2 end points an edge; shaders/lines/crease_vert.glsl).
     void set_creases(const std::vector<glm::vec3>& end_points);
     void draw_creases() const;  // GL_LINES over every crease
+    // The same sharp edges on the CPU, for the CPU line pass where the GL has no geometry stage (gles_compat.h).
+    const std::vector<CreaseEdge>& cpu_creases() const { return cpu_creases_; }
     size_t crease_count() const { return creases_; }
 
     // The interleaved vertex records (GpuVertex) and the triangles (three
@@ -106,6 +108,7 @@ private:
     SurfaceFields cpu_fields_;
     std::vector<glm::vec3> cpu_fine_normals_;
     std::vector<glm::uvec2> cpu_boundary_edges_;
+    std::vector<CreaseEdge> cpu_creases_;
     uint64_t fields_version_ = 0;
 };
 

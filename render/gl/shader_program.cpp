@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <regex>
 #include <stdexcept>
 
 namespace kappa::render {
@@ -27,14 +28,46 @@ std::string join_names(const std::vector<std::string>& files) {
     return s;
 }
 
+// GLSL ES 3.00 (OpenGL ES 3.0) has no blocks between stages: each `in|out Name { members } instance;`
+// becomes one variable a member, named Name_member (stages then match by the block's name, as blocks
+// do), and `instance.member` becomes Name_member. Comments go first (they may hold ';' or '}').
+std::string without_interface_blocks(const std::string& source) {
+    static const std::regex comment(R"(//[^\n]*|/\*[^*]*\*+([^/*][^*]*\*+)*/)");
+    static const std::regex block(R"(\b(in|out)\s+(\w+)\s*\{([^}]*)\}\s*(\w+)\s*;)");
+    static const std::regex member(R"(([^;]*?)(\w+)\s*(\[[^\]]*\])?\s*;)");
+    std::string text = std::regex_replace(source, comment, "");
+    std::smatch b;
+    while (std::regex_search(text, b, block)) {
+        const std::string direction = b[1], name = b[2], members = b[3], instance = b[4];
+        std::string variables;
+        for (auto m = std::sregex_iterator(members.begin(), members.end(), member); m != std::sregex_iterator(); ++m) {
+            std::string type = (*m)[1];  // "flat vec4 ": interpolation, then the direction, then the type
+            const size_t flat = type.find("flat");
+            const std::string interpolation = flat == std::string::npos ? "" : "flat ";
+            if (flat != std::string::npos) type.erase(flat, 4);
+            variables += interpolation + direction + " " + type + " " + name + "_" + std::string((*m)[2]) +
+                         std::string((*m)[3]) + ";\n";
+        }
+        text = std::string(b.prefix()) + variables + std::string(b.suffix());
+        text = std::regex_replace(text, std::regex("\\b" + instance + "\\.(\\w+)"), name + "_$1");
+    }
+    return text;
+}
+
 GLuint compile(const ShaderStage& stage) {
     // "#line 1 N" makes GL logs report "N:line" with N = index of the file
     // (0 is the version line): the error message lists the files in order.
     // GLSL 3.30 (GL 3.3) for the drawing stages; compute passes need 4.30.
-    const char* version = stage.type == GL_COMPUTE_SHADER ? "#version 430 core\n" : "#version 330 core\n";
+    // OpenGL ES 3.0 (web/): the same sources as GLSL ES 3.00, with every precision high.
+    const char* version = kGles ? "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                                  "precision highp sampler2D;\nprecision highp sampler2DShadow;\n"
+                          : stage.type == GL_COMPUTE_SHADER ? "#version 430 core\n"
+                                                            : "#version 330 core\n";
     std::vector<std::string> parts{version + stage.defines};
     for (size_t i = 0; i < stage.files.size(); ++i)
-        parts.push_back("#line 1 " + std::to_string(i + 1) + "\n" + shader_text(stage.files[i]) + "\n");
+        parts.push_back("#line 1 " + std::to_string(i + 1) + "\n" +
+                        (kGles ? without_interface_blocks(shader_text(stage.files[i])) : shader_text(stage.files[i])) +
+                        "\n");
     std::vector<const char*> ptrs;
     for (const auto& p : parts) ptrs.push_back(p.c_str());
 
@@ -87,6 +120,10 @@ ShaderProgram::ShaderProgram(const std::vector<ShaderStage>& stages) {
         id_ = 0;
         throw std::runtime_error("cannot link the shader program " + names + ": " + log.c_str());
     }
+}
+
+ShaderProgram geometry_stage_program(const std::vector<ShaderStage>& stages) {
+    return kGles ? ShaderProgram() : ShaderProgram(stages);
 }
 
 ShaderProgram::~ShaderProgram() {

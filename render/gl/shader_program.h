@@ -1,7 +1,7 @@
 // A linked GLSL program built from embedded shaders/*/*.glsl files, named by
 // their room ("lines/lines_frag.glsl"). Each stage is the concatenation of one
 // or more files (shared functions first), after a "#version 330 core" line
-// ("#version 430 core" for compute shaders);
+// ("#version 430 core" for compute shaders; "#version 300 es" in the browser build, gles_compat.h);
 // compile errors name the files and carry the GL log.
 #pragma once
 
@@ -55,5 +55,9 @@ private:
     GLuint id_ = 0;
     std::unordered_map<std::string, GLint> locations_;
 };
+
+// A program with a geometry stage, or none (id 0) on OpenGL ES, which has no geometry stage: the
+// passes that use one are never taken there (gles_compat.h).
+ShaderProgram geometry_stage_program(const std::vector<ShaderStage>& stages);
 
 }  // namespace kappa::render

@@ -21,9 +21,10 @@ float tapered_width(float width, float taper, float s, float total) {
 }
 
 StrokePass::StrokePass()
-    : program_({{GL_VERTEX_SHADER, {"hatching/strokes_vert.glsl"}},
-                {GL_GEOMETRY_SHADER, {"lines/segment_emit.glsl", "lines/line_quad.glsl", "hatching/strokes_geom.glsl"}},
-                {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}}) {
+    : program_(geometry_stage_program(
+          {{GL_VERTEX_SHADER, {"hatching/strokes_vert.glsl"}},
+           {GL_GEOMETRY_SHADER, {"lines/segment_emit.glsl", "lines/line_quad.glsl", "hatching/strokes_geom.glsl"}},
+           {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}})) {
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &buffer_);
     glBindVertexArray(vao_);

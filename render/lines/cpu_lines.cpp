@@ -260,17 +260,28 @@ CpuLines CpuLinePass::prepare(const MeshBuffers& mesh, const FrameParams& frame,
     window.mvp = frame.mvp, window.viewport = frame.viewport;
     window.scale_tolerance = s.detail * 2.0f / (frame.projection[1][1] * frame.viewport.y);
     window.silhouette_only = l.silhouette && !l.contours;
-    // Boundary edges (not culled, as the GL pass drew them all) after the blocks of faces.
+    // Boundary edges (not culled, as the GL pass drew them all) after the blocks of faces; then, where
+    // the GL has no geometry stage to draw them (gles_compat.h), the sharp edges.
     const bool boundaries = l.boundaries && !mesh.cpu_boundary_edges().empty();
-    std::vector<std::vector<WindowSegment>> block_segments(blocks.size() + size_t(boundaries));
+    const bool creases = kGles && (l.creases || l.any_contours()) && !mesh.cpu_creases().empty();
+    const size_t boundary_block = blocks.size(), crease_block = blocks.size() + size_t(boundaries);
+    std::vector<std::vector<WindowSegment>> block_segments(crease_block + size_t(creases));
     parallel_for_dynamic(block_segments.size(), [&](size_t i) {
         thread_local ExtractedLines found;  // kept per worker: its vectors' storage is reused
         thread_local std::vector<LineSegment> merged;
         for (auto& segments : found) segments.clear();
-        if (i == blocks.size()) {
+        if (boundaries && i == boundary_block) {
             auto& edges = found[int(LineType::Boundary)];
             append_boundary_segments(m, mesh.cpu_boundary_edges(), edges);
             append_polylines(LineType::Boundary, chain_segments(edges), merge, window, merged, block_segments[i]);
+            return;
+        }
+        if (creases && i == crease_block) {
+            LineExtractionOptions edges = o;
+            edges.creases = l.creases, edges.hidden_creases = s.hidden_lines;
+            append_crease_segments(mesh.cpu_creases(), frame.eye, edges, found);
+            for (LineType type : {LineType::Crease, LineType::Contour})
+                append_polylines(type, chain_segments(found[int(type)]), merge, window, merged, block_segments[i]);
             return;
         }
         for (const MaskedRun& r : blocks[i].runs) {
@@ -330,17 +341,24 @@ InkArea CpuLinePass::draw(const CpuLines& lines, const std::vector<WindowSegment
         ink.rects = inked_rectangles(coverage_, w, h);
         return ink;
     }
-    if (lines.segment_count == 0) return ink;
+    // Through the GL: four corners a segment; the strokes too where the GL has no geometry stage for
+    // their own pass (gles_compat.h).
+    const std::vector<WindowSegment> none;
+    const std::vector<WindowSegment>& quad_strokes = kGles ? strokes : none;
+    const size_t quads = lines.segment_count + quad_strokes.size();
+    if (quads == 0) return ink;
     ink.anywhere = true;
-    // Through the GL: four corners a segment.
     std::vector<QuadVertex> corners;
-    corners.reserve(4 * lines.segment_count);
+    corners.reserve(4 * quads);
+    auto add_corners = [&](const WindowSegment& seg) {
+        for (int corner = 0; corner < 4; ++corner)
+            corners.push_back({seg.a, seg.b, seg.alpha, seg.tolerance, float(4 * int(seg.exterior_only) + corner)});
+    };
     for (const auto& b : lines.blocks)
-        for (const WindowSegment& seg : b)
-            for (int corner = 0; corner < 4; ++corner)
-                corners.push_back({seg.a, seg.b, seg.alpha, seg.tolerance, float(4 * int(seg.exterior_only) + corner)});
+        for (const WindowSegment& seg : b) add_corners(seg);
+    for (const WindowSegment& seg : quad_strokes) add_corners(seg);
     glBindVertexArray(vao_);
-    ensure_indices(lines.segment_count);
+    ensure_indices(quads);
     program_.use();
     program_.set("u_viewport", frame.viewport);
     program_.set("u_line_width", s.line_width);
@@ -349,7 +367,7 @@ InkArea CpuLinePass::draw(const CpuLines& lines, const std::vector<WindowSegment
     program_.set("u_hidden_lines", int(s.hidden_lines));
     glBindBuffer(GL_ARRAY_BUFFER, buffer_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(QuadVertex)), corners.data(), GL_STREAM_DRAW);
-    glDrawElements(GL_TRIANGLES, GLsizei(lines.segment_count * 6), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, GLsizei(quads * 6), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
     return ink;
 }

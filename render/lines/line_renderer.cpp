@@ -1,5 +1,7 @@
 #include "render/lines/line_renderer.h"
 
+#include "geometry/parallel/parallel.h"
+
 
 #include <algorithm>
 #include <cmath>
@@ -11,18 +13,18 @@ namespace kappa::render {
 
 namespace {
 
-std::vector<ShaderStage> line_program(std::vector<std::string> geometry_files, std::string defines = {}) {
-    return {{GL_VERTEX_SHADER,
+ShaderProgram line_program(std::vector<std::string> geometry_files, std::string defines = {}) {
+    return geometry_stage_program({{GL_VERTEX_SHADER,
              {"common/mesh_attributes.glsl", "common/view_dependent.glsl", "lines/line_vertex.glsl", "lines/lines_vert.glsl"}},
             {GL_GEOMETRY_SHADER, std::move(geometry_files), std::move(defines)},
-            {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}};
+            {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}});
 }
 
 // A per-triangle line family in the geometry stage: vertex_files compute its
 // per-vertex quantities (ending with the family's vertex file, whose
 // structure the geometry stage reads too), geometry_file feeds them to its
 // extraction (extraction_file).
-std::vector<ShaderStage> triangle_program(std::vector<std::string> vertex_files, const std::string& vertex_stage,
+ShaderProgram triangle_program(std::vector<std::string> vertex_files, const std::string& vertex_stage,
                                           const std::string& extraction_file, const std::string& geometry_file,
                                           std::string defines = {}) {
     std::vector<std::string> vertex = {"common/mesh_attributes.glsl"};
@@ -33,9 +35,9 @@ std::vector<ShaderStage> triangle_program(std::vector<std::string> vertex_files,
     geometry.insert(geometry.end(), vertex_files.begin(), vertex_files.end());
     geometry.push_back(extraction_file);
     geometry.push_back(geometry_file);
-    return {{GL_VERTEX_SHADER, std::move(vertex)},
-            {GL_GEOMETRY_SHADER, std::move(geometry), std::move(defines)},
-            {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}};
+    return geometry_stage_program({{GL_VERTEX_SHADER, std::move(vertex)},
+                                   {GL_GEOMETRY_SHADER, std::move(geometry), std::move(defines)},
+                                   {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}});
 }
 
 // The same family as a compute pass (shaders/lines/triangles_comp.glsl).
@@ -72,14 +74,16 @@ LineRenderer::LineRenderer()
                                     "lines/view_ridges_geom.glsl")),
       level_lines_(triangle_program(kLevelVertex, "lines/level_lines_vert.glsl", "lines/level_lines.glsl",
                                     "lines/level_lines_geom.glsl")),
-      vectors_({{GL_VERTEX_SHADER, {"common/mesh_attributes.glsl", "lines/vectors_vert.glsl"}},
-                {GL_GEOMETRY_SHADER, {"lines/segment_emit.glsl", "lines/line_quad.glsl", "lines/vectors_geom.glsl"}},
-                {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}}),
-      creases_({{GL_VERTEX_SHADER, {"lines/crease_vert.glsl"}},
-                {GL_GEOMETRY_SHADER,
-                 {"lines/segment_emit.glsl", "lines/line_quad.glsl", "lines/edge_inputs.glsl", "lines/crease_lines.glsl",
-                  "lines/crease_geom.glsl"}},
-                {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}}) {
+      vectors_(geometry_stage_program(
+          {{GL_VERTEX_SHADER, {"common/mesh_attributes.glsl", "lines/vectors_vert.glsl"}},
+           {GL_GEOMETRY_SHADER, {"lines/segment_emit.glsl", "lines/line_quad.glsl", "lines/vectors_geom.glsl"}},
+           {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}})),
+      creases_(geometry_stage_program(
+          {{GL_VERTEX_SHADER, {"lines/crease_vert.glsl"}},
+           {GL_GEOMETRY_SHADER,
+            {"lines/segment_emit.glsl", "lines/line_quad.glsl", "lines/edge_inputs.glsl", "lines/crease_lines.glsl",
+             "lines/crease_geom.glsl"}},
+           {GL_FRAGMENT_SHADER, {"lines/lines_frag.glsl"}}})) {
     if (SegmentBuffer::supported()) compute_ = std::make_unique<ComputeFamilies>();
 }
 
@@ -127,7 +131,9 @@ void LineRenderer::set_common(ShaderProgram& p, const MeshBuffers& mesh, const F
 }
 
 void LineRenderer::begin_cpu_lines(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s) {
-    pending_cpu_lines_ = std::async(std::launch::async, [this, &mesh, frame, s] { return cpu_lines_.prepare(mesh, frame, s); });
+    // With one thread (the browser build) they are made when draw() asks for them.
+    const auto policy = thread_count() > 1 ? std::launch::async : std::launch::deferred;
+    pending_cpu_lines_ = std::async(policy, [this, &mesh, frame, s] { return cpu_lines_.prepare(mesh, frame, s); });
 }
 
 InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, const RenderSettings& s,
@@ -291,7 +297,8 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
     }
     if (creases || boundaries) ink.anywhere = true;  // after the CPU lines' own ink area
     // The GL passes below test against the depth texture: a depth drawn on the CPU goes there first.
-    const bool glyphs = s.vectors != 0 && mesh.vertex_count() > 0;
+    // OpenGL ES: no geometry stage for glyphs; creases came with the CPU lines (gles_compat.h).
+    const bool glyphs = s.vectors != 0 && mesh.vertex_count() > 0 && !kGles;
     if (cpu_depth && cpu_depth->size() == size_t(frame.viewport.x) * size_t(frame.viewport.y) && (glyphs || creases)) {
         glBindTexture(GL_TEXTURE_2D, surface_depth_texture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -308,7 +315,7 @@ InkArea LineRenderer::draw(const MeshBuffers& mesh, const FrameParams& frame, co
         vectors_.set("u_stride", int(std::max<size_t>(1, mesh.vertex_count() / wanted)));
         mesh.draw_points();
     }
-    if (creases && !compute) {
+    if (creases && !compute && !kGles) {
         set_common(creases_, mesh, frame, s);
         creases_.set("u_creases", int(s.lines.creases));
         creases_.set("u_contours", int(contours));

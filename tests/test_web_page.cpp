@@ -1,0 +1,137 @@
+// The browser page (web/, docs/web.md) in headless Chromium, driven by
+// tests/web/page_driver.py over the DevTools protocol, against the kappa
+// executable: the same views draw the same lines, a bad file shows the
+// command line's error and the page then opens the next mesh, and the page's
+// SVG holds the CLI's strokes. Built and run only where emscripten and
+// Chromium are installed (KAPPA_WEB, CMakeLists.txt).
+#include "test_support.h"
+
+#include "render/image/ink_agreement.h"
+#include "render/image/png_writer.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+using namespace kappa;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A folder of meshes for the page's server: the shared ones named, linked.
+std::string mesh_folder(const std::vector<std::string>& names) {
+    const std::string dir = test::temp_dir() + "/meshes";
+    fs::create_directories(dir);
+    for (const std::string& name : names) fs::create_symlink(test::shared_mesh(name), dir + "/" + name);
+    return dir;
+}
+
+// Runs the page driver; fails the test with its output when it fails.
+std::string drive_page(const std::string& meshes, const std::string& out, const std::string& actions) {
+    const test::CommandResult r = test::run_command(std::string("python3 ") + KAPPA_SOURCE_DIR +
+                                                    "/tests/web/page_driver.py " + KAPPA_WEB_SITE + " " + meshes +
+                                                    " " + out + " " + actions);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    return r.output;
+}
+
+std::string cli(const std::string& args) { return std::string(KAPPA_EXE) + " " + args; }
+
+}  // namespace
+
+// The views: 800x600 at azimuth 30, elevation 20, the default
+// settings. The page draws the lines the CPU extracts, as quads on WebGL2;
+// kappa render on llvmpipe rasterises the same segments on the CPU: at least
+// 0.95 of each picture's ink lies within 2 px of the other's.
+TEST_CASE("the page draws what kappa render draws for the same view", "[web]") {
+    const std::vector<std::string> meshes = {"bunny.ply", "fandisk.obj", "spot.obj"};
+    const std::string out = test::temp_dir();
+    std::string actions;
+    for (const std::string& m : meshes)
+        actions += " shot:" + m + ":mesh=meshes/" + m + "\\&view=30,20\\&size=800x600\\&panel=off";
+    drive_page(mesh_folder(meshes), out, actions);
+    for (const std::string& m : meshes) {
+        const test::CommandResult r =
+            test::run_command(cli("render " + test::shared_mesh(m) + " --view 30,20 --size 800x600 -q -o " + out +
+                                  "/" + m + ".cli.png"));
+        REQUIRE(r.exit_code == 0);
+        const render::Image page = render::read_png(out + "/" + m + ".png");
+        const render::Image cli_image = render::read_png(out + "/" + m + ".cli.png");
+        REQUIRE(page.width == 800);
+        REQUIRE(page.height == 600);
+        const double page_in_cli = render::ink_within(page, cli_image, 2.0f);
+        const double cli_in_page = render::ink_within(cli_image, page, 2.0f);
+        INFO(m << ": ink " << render::count_ink(page) << " (page), " << render::count_ink(cli_image)
+               << " (CLI); page within 2 px of the CLI's " << page_in_cli << ", the CLI's within 2 px of the page's "
+               << cli_in_page);
+        CHECK(render::count_ink(page) > 2000);
+        CHECK(page_in_cli >= 0.95);
+        CHECK(cli_in_page >= 0.95);
+    }
+}
+
+// A PLY cut in the middle of its faces: the page shows the line `kappa
+// render` prints, says so in its title, and then opens the next mesh.
+TEST_CASE("a truncated PLY shows the CLI's error and the page opens the next mesh", "[web]") {
+    const std::string meshes = mesh_folder({"spot.obj"});
+    const std::string bytes = test::read_file(test::shared_mesh("bunny.ply"));
+    test::write_file(meshes + "/truncated.ply", bytes.substr(0, bytes.size() * 3 / 4));
+    const std::string out = test::temp_dir();
+    drive_page(meshes, out, "error:bad:mesh=meshes/truncated.ply\\&size=400x300\\&panel=off:meshes/spot.obj");
+
+    const test::CommandResult r = test::run_command("cd " + meshes + " && " + cli("render truncated.ply -q -o " + out + "/x.png"));
+    REQUIRE(r.exit_code != 0);
+    const std::string cli_line = r.output.substr(0, r.output.find('\n'));  // "kappa: truncated.ply: ..."
+    REQUIRE(cli_line.rfind("kappa: truncated.ply: ", 0) == 0);
+    const std::string seen = test::read_file(out + "/bad.txt");  // the title, then the message shown
+    const std::string title = seen.substr(0, seen.find('\n'));
+    const std::string shown = seen.substr(seen.find('\n') + 1, seen.size() - seen.find('\n') - 2);
+    INFO("CLI: " << cli_line << "\npage title: " << title << "\npage: " << shown);
+    CHECK(shown == cli_line);
+    CHECK(title == "kappa: error: " + cli_line.substr(std::string("kappa: ").size()));
+    // Then spot drawn: lines on the canvas.
+    const render::Image next = render::read_png(out + "/bad.png");
+    CHECK(render::count_ink(next) > 500);
+}
+
+// The page's SVG comes from the CLI's writer: the same layers, about as
+// many paths, and the strokes in the same places (both drawn by rsvg-convert:
+// at least 0.95 of each one's ink within 2 px of the other's).
+TEST_CASE("the page's SVG is the CLI's SVG of the same view", "[web]") {
+    const std::string out = test::temp_dir();
+    drive_page(mesh_folder({"spot.obj"}), out,
+               "svg:spot:mesh=meshes/spot.obj\\&view=30,20\\&size=640x480\\&panel=off\\&shading=none");
+    REQUIRE(test::run_command(cli("render " + test::shared_mesh("spot.obj") +
+                                  " --view 30,20 --size 640x480 --shading none -q -o " + out + "/cli.svg"))
+                .exit_code == 0);
+    const std::string page = test::read_file(out + "/spot.svg"), ours = test::read_file(out + "/cli.svg");
+    auto layers = [](const std::string& svg) {
+        std::vector<std::string> ids;
+        const std::regex id("<g [^>]*id=\"([a-z-]+)\"");
+        for (auto it = std::sregex_iterator(svg.begin(), svg.end(), id); it != std::sregex_iterator(); ++it)
+            ids.push_back((*it)[1]);
+        return ids;
+    };
+    auto paths = [](const std::string& svg) {
+        size_t n = 0;
+        for (size_t at = svg.find("<path"); at != std::string::npos; at = svg.find("<path", at + 1)) ++n;
+        return n;
+    };
+    INFO("paths: page " << paths(page) << ", CLI " << paths(ours));
+    CHECK(layers(page) == layers(ours));
+    CHECK(!layers(page).empty());
+    CHECK(std::abs(double(paths(page)) - double(paths(ours))) <= 0.05 * double(paths(ours)) + 2);
+    for (const char* name : {"spot", "cli"})
+        REQUIRE(test::run_command(std::string("rsvg-convert -b white -o ") + out + "/" + name + ".svg.png " + out + "/" +
+                                  name + ".svg")
+                    .exit_code == 0);
+    const render::Image a = render::read_png(out + "/spot.svg.png"), b = render::read_png(out + "/cli.svg.png");
+    INFO("page's SVG within 2 px of the CLI's " << render::ink_within(a, b, 2.0f) << ", and back "
+                                                << render::ink_within(b, a, 2.0f));
+    CHECK(render::count_ink(a) > 1000);
+    CHECK(render::ink_within(a, b, 2.0f) >= 0.95);
+    CHECK(render::ink_within(b, a, 2.0f) >= 0.95);
+}

@@ -1,0 +1,400 @@
+// The kappa page: URL parameters, the mesh file (URL, file picker, drag and
+// drop), mouse navigation, the settings panel (built from the settings table of
+// app/appearance_settings.h that the wasm module hands over as JSON) and the
+// PNG and SVG downloads. The drawing itself is web/src/page_api.cpp's.
+//
+// URL parameters (docs/web.md): mesh=URL view=AZ,EL size=WxH lines=LIST
+// shading=NAME panel=off. document.title says "kappa: ready" once the view
+// asked for is drawn, "kappa: error: MESSAGE" when something failed.
+'use strict';
+
+const params = new URLSearchParams(window.location.search);
+const canvas = document.getElementById('canvas');
+const messageBox = document.getElementById('message');
+let fixedSize = null;       // [w, h] from size=WxH
+let meshName = 'kappa';     // for the names of downloads
+let drawPending = false;
+let readyWhenDrawn = false; // the title turns to ready after the next complete frame
+
+function call(name, ...args) {
+  const types = args.map(a => (typeof a === 'number' ? 'number' : 'string'));
+  const status = Module.ccall(name, 'number', types, args);
+  if (status !== 0) throw new Error(Module.ccall('kappa_message', 'string', [], []));
+}
+
+function showMessage(text, isError) {
+  messageBox.textContent = text;
+  messageBox.className = isError ? 'error' : '';
+}
+
+function fail(message) {
+  // The same line as the command line prints ("kappa: NAME: problem").
+  showMessage('kappa: ' + message, true);
+  document.title = 'kappa: error: ' + message;
+  readyWhenDrawn = false;
+}
+
+function requestDraw() {
+  if (drawPending) return;
+  drawPending = true;
+  // A timer as well as a frame callback: whichever comes first draws (frame
+  // callbacks do not run in some headless modes).
+  const draw = () => {
+    if (!drawPending) return;
+    drawPending = false;
+    try {
+      call('kappa_draw');
+      if (readyWhenDrawn) {
+        readyWhenDrawn = false;
+        document.title = 'kappa: ready';
+      }
+    } catch (e) {
+      fail(e.message);
+    }
+  };
+  requestAnimationFrame(draw);
+  setTimeout(draw, 50);
+}
+
+// --- size and layout -----------------------------------------------------------
+
+function layout() {
+  let w, h;
+  if (fixedSize) {
+    [w, h] = fixedSize;
+  } else {
+    const view = document.getElementById('view');
+    w = Math.max(1, view.clientWidth);
+    h = Math.max(1, view.clientHeight);
+  }
+  canvas.style.width = w + 'px';
+  canvas.style.height = h + 'px';
+  call('kappa_resize', w, h);
+  requestDraw();
+}
+
+// --- opening meshes ------------------------------------------------------------
+
+function baseName(path) {
+  const name = decodeURIComponent(path.split(/[?#]/)[0].split('/').pop() || 'mesh');
+  return name.replace(/[^A-Za-z0-9._+-]/g, '_');
+}
+
+// Reads the mesh from bytes under its file name, as `kappa render NAME` would read the file.
+function openBytes(name, bytes) {
+  showMessage('reading ' + name + ' ...', false);
+  document.title = 'kappa: loading';
+  // Let the page show the message before the module computes (a few seconds for large meshes).
+  return new Promise(resolve => setTimeout(resolve, 0)).then(() => {
+    Module.FS.writeFile('/input/' + name, bytes);
+    try {
+      call('kappa_open', name);
+      meshName = name.replace(/\.[^.]*$/, '');
+      showMessage(name, false);
+      readyWhenDrawn = true;
+      requestDraw();
+      refreshPanel();
+    } catch (e) {
+      fail(e.message);
+    } finally {
+      Module.FS.unlink('/input/' + name);
+    }
+  });
+}
+
+function openUrl(url) {
+  const name = baseName(url);
+  document.title = 'kappa: loading';
+  return fetch(url)
+    .then(r => {
+      if (!r.ok) throw new Error(name + ': cannot read (HTTP ' + r.status + ')');
+      return r.arrayBuffer();
+    })
+    .then(buffer => openBytes(name, new Uint8Array(buffer)))
+    .catch(e => fail(e.message.startsWith(name) ? e.message : name + ': cannot read (' + e.message + ')'));
+}
+
+function openFile(file) {
+  return file.arrayBuffer().then(buffer => openBytes(baseName(file.name), new Uint8Array(buffer)));
+}
+
+// --- navigation ----------------------------------------------------------------
+
+let drag = null;
+let restTimer = 0;
+
+function moving() {
+  Module.ccall('kappa_moving', null, ['number'], [1]);
+  clearTimeout(restTimer);
+}
+
+function rest(delay) {
+  clearTimeout(restTimer);
+  restTimer = setTimeout(() => {
+    Module.ccall('kappa_moving', null, ['number'], [0]);
+    requestDraw();
+  }, delay);
+}
+
+function canvasPoint(event) {
+  const r = canvas.getBoundingClientRect();
+  return [event.clientX - r.left, event.clientY - r.top];
+}
+
+canvas.addEventListener('pointerdown', event => {
+  try {
+    canvas.setPointerCapture(event.pointerId);  // drags continue outside the canvas
+  } catch (e) {
+    // a synthetic event's pointer cannot be captured
+  }
+  drag = { at: canvasPoint(event), pan: event.button !== 0 || event.shiftKey };
+  moving();
+});
+canvas.addEventListener('pointermove', event => {
+  if (!drag) return;
+  const to = canvasPoint(event);
+  Module.ccall(drag.pan ? 'kappa_pan' : 'kappa_orbit', null, ['number', 'number', 'number', 'number'],
+               [drag.at[0], drag.at[1], to[0], to[1]]);
+  drag.at = to;
+  requestDraw();
+});
+canvas.addEventListener('pointerup', () => {
+  drag = null;
+  rest(0);
+});
+canvas.addEventListener('wheel', event => {
+  event.preventDefault();
+  const [x, y] = canvasPoint(event);
+  moving();
+  Module.ccall('kappa_zoom', null, ['number', 'number', 'number'], [event.deltaY < 0 ? 1 : -1, x, y]);
+  requestDraw();
+  rest(250);
+}, { passive: false });
+
+// --- the panel: the settings table -------------------------------------------------
+
+// Where each setting goes in the panel, as in the desktop viewer's (app/viewer/ui_panel.cpp);
+// settings not named here are listed under "More".
+const panelSections = [
+  ['Lines', ['hidden-lines', 'fade', 'detail', 'line-width', 'line-color']],
+  ['Surface', ['shading', 'light', 'light-frame', 'colormap', 'colorbar', 'hatching', 'hatch-spacing',
+               'hatch-style', 'background', 'msaa']],
+];
+
+function setSetting(name, value) {
+  try {
+    call('kappa_set', name, String(value));
+    requestDraw();
+  } catch (e) {
+    fail(e.message);
+  }
+  refreshPanel();
+}
+
+function element(tag, attributes, ...children) {
+  const e = document.createElement(tag);
+  Object.assign(e, attributes || {});
+  for (const c of children) e.append(c);
+  return e;
+}
+
+function labelled(setting, ...controls) {
+  const label = element('label', { title: '--' + setting.name + ': ' + setting.help },
+                        element('span', { className: 'name', textContent: setting.label }), ...controls);
+  return label;
+}
+
+function sliderWidget(s) {
+  const log = s.log && s.min > 0;
+  const toSlider = v => (log ? Math.log(v) : v);
+  const fromSlider = v => (log ? Math.exp(v) : v);
+  const slider = element('input', { type: 'range', min: toSlider(s.min), max: toSlider(s.max),
+                                    step: s.kind === 'integer' ? 1 : (toSlider(s.max) - toSlider(s.min)) / 200,
+                                    value: toSlider(s.value) });
+  const shown = element('output', { textContent: Number(s.value).toPrecision(3).replace(/\.?0+$/, '') });
+  const value = () => (s.kind === 'integer' ? Math.round(fromSlider(+slider.value))
+                                             : +fromSlider(+slider.value).toPrecision(4));
+  slider.addEventListener('input', () => { shown.textContent = value(); });
+  // Settings that prepare the mesh again (the detail) change on release, the rest as they move.
+  slider.addEventListener(s.name === 'detail' ? 'change' : 'input', () => setSetting(s.name, value()));
+  if (!s.can_be_off) return labelled(s, slider, shown);
+  const on = element('input', { type: 'checkbox', checked: s.value > 0 });
+  on.addEventListener('change', () => setSetting(s.name, on.checked ? fromSlider((+slider.min + +slider.max) / 2) : 'off'));
+  slider.disabled = !(s.value > 0);
+  return labelled(s, on, slider, shown);
+}
+
+function settingWidget(s) {
+  if (s.kind === 'choice' && s.choices.length === 2 && s.choices[0] === 'off' && s.choices[1] === 'on') {
+    const box = element('input', { type: 'checkbox', checked: s.value === 'on' });
+    box.addEventListener('change', () => setSetting(s.name, box.checked ? 'on' : 'off'));
+    return labelled(s, box);
+  }
+  if (s.kind === 'choice') {
+    const select = element('select', {}, ...s.choices.map(c => element('option', { value: c, textContent: c })));
+    select.value = s.value;
+    select.addEventListener('change', () => setSetting(s.name, select.value));
+    return labelled(s, select);
+  }
+  if (s.kind === 'number' || s.kind === 'integer') return sliderWidget(s);
+  if (s.kind === 'color') {
+    const picker = element('input', { type: 'color', value: s.value });
+    picker.addEventListener('input', () => setSetting(s.name, picker.value));
+    return labelled(s, picker);
+  }
+  const text = element('input', { type: 'text', value: s.value, size: 12 });
+  text.addEventListener('change', () => setSetting(s.name, text.value));
+  return labelled(s, text);
+}
+
+function refreshPanel() {
+  if (params.get('panel') === 'off') return;
+  const table = JSON.parse(Module.ccall('kappa_settings', 'string', [], []));
+  const byName = new Map(table.settings.map(s => [s.name, s]));
+  const root = document.getElementById('settings');
+  root.replaceChildren();
+  // Line kinds: a checkbox each, then the thresholds of those that are on.
+  root.append(element('h2', { textContent: 'Lines' }));
+  const onKinds = () => table.lines.flatMap(g => g.lines).filter(l => l.on).map(l => l.kind);
+  for (const group of table.lines) {
+    root.append(element('h3', { textContent: group.title }));
+    const sliders = [];
+    for (const line of group.lines) {
+      const box = element('input', { type: 'checkbox', checked: line.on });
+      box.addEventListener('change', () => {
+        line.on = box.checked;
+        const kinds = onKinds();
+        setSetting('lines', kinds.length ? kinds.join(',') : 'none');
+      });
+      root.append(element('label', { title: '--lines ' + line.kind }, box, line.label));
+      if (line.on && line.setting && !sliders.includes(line.setting)) sliders.push(line.setting);
+    }
+    for (const name of sliders) if (byName.has(name)) root.append(settingWidget(byName.get(name)));
+  }
+  const placed = new Set(['lines', ...table.lines.flatMap(g => g.lines).map(l => l.setting)]);
+  for (const [title, names] of panelSections) {
+    if (title !== 'Lines') root.append(element('h2', { textContent: title }));
+    for (const name of names) {
+      placed.add(name);
+      if (byName.has(name)) root.append(settingWidget(byName.get(name)));
+    }
+  }
+  const more = table.settings.filter(s => !placed.has(s.name));
+  if (more.length) {
+    const details = element('details', {}, element('summary', { textContent: 'More' }));
+    for (const s of more) details.append(settingWidget(s));
+    root.append(element('h2', { textContent: 'Output' }), details);
+  }
+}
+
+// --- downloads -------------------------------------------------------------------
+
+function download(blob, name) {
+  const a = element('a', { href: URL.createObjectURL(blob), download: name });
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+
+// The SVG of the current view, by the command line's writer (render/vector/svg_writer.cpp).
+function svgText() {
+  call('kappa_write', '/output/view.svg');
+  const text = Module.FS.readFile('/output/view.svg', { encoding: 'utf8' });
+  Module.FS.unlink('/output/view.svg');
+  requestDraw();  // the canvas is drawn again after the vector pass used the renderer
+  return text;
+}
+
+function pngDataUrl() {
+  call('kappa_draw');
+  return canvas.toDataURL('image/png');
+}
+
+document.getElementById('save-png').addEventListener('click', () => {
+  try {
+    call('kappa_draw');
+    canvas.toBlob(blob => download(blob, meshName + '.png'), 'image/png');
+  } catch (e) {
+    fail(e.message);
+  }
+});
+document.getElementById('save-svg').addEventListener('click', () => {
+  try {
+    download(new Blob([svgText()], { type: 'image/svg+xml' }), meshName + '.svg');
+  } catch (e) {
+    fail(e.message);
+  }
+});
+document.getElementById('reset').addEventListener('click', () => {
+  try {
+    call('kappa_view', params.get('view') || '');
+    requestDraw();
+  } catch (e) {
+    fail(e.message);
+  }
+});
+document.getElementById('file').addEventListener('change', event => {
+  if (event.target.files.length) openFile(event.target.files[0]);
+});
+for (const type of ['dragenter', 'dragover']) {
+  window.addEventListener(type, event => {
+    event.preventDefault();
+    document.body.classList.add('dragging');
+  });
+}
+window.addEventListener('dragleave', event => {
+  if (!event.relatedTarget) document.body.classList.remove('dragging');
+});
+window.addEventListener('drop', event => {
+  event.preventDefault();
+  document.body.classList.remove('dragging');
+  if (event.dataTransfer.files.length) openFile(event.dataTransfer.files[0]);
+});
+
+// For scripts and tests (tests/web/): what the buttons do, as values.
+window.kappaPage = { openUrl, openBytes, svgText, pngDataUrl, setSetting };
+
+// --- start -------------------------------------------------------------------------
+
+function start() {
+  Module.FS.mkdir('/input');
+  Module.FS.mkdir('/output');
+  Module.FS.chdir('/input');  // file names in messages as the command line shows them
+  call('kappa_start', '#canvas');
+  if (params.get('panel') === 'off') {
+    document.body.classList.add('bare');
+    document.getElementById('panel').style.display = 'none';
+  }
+  const size = params.get('size');
+  if (size !== null) {
+    const m = /^(\d+)x(\d+)$/.exec(size);
+    if (!m) throw new Error("--size expects WxH, got '" + size + "'");
+    fixedSize = [+m[1], +m[2]];
+  }
+  window.addEventListener('resize', layout);
+  layout();
+  if (params.has('view')) call('kappa_view', params.get('view'));
+  for (const name of ['lines', 'shading']) if (params.has(name)) call('kappa_set', name, params.get(name));
+  refreshPanel();
+  if (params.has('mesh')) return openUrl(params.get('mesh'));
+  // No mesh: the built-in model, as `kappa view` without MESH.
+  call('kappa_open', '');
+  showMessage('The built-in model. Open a mesh with the file picker above, drop a file here, or ?mesh=URL.', false);
+  readyWhenDrawn = true;
+  requestDraw();
+  refreshPanel();
+}
+
+var Module = {
+  canvas,
+  print: text => console.log(text),
+  printErr: text => console.warn(text),
+  onRuntimeInitialized: () => {
+    try {
+      start();
+    } catch (e) {
+      fail(e.message);
+    }
+  },
+};

@@ -1,0 +1,103 @@
+#include "web/src/page_state.h"
+
+#include "app/appearance_settings.h"
+#include "app/cli_options.h"
+#include "app/mesh_source.h"
+#include "geometry/parallel/parallel.h"
+#include "geometry/view/default_view.h"
+
+#include <stdexcept>
+
+namespace kappa::web {
+
+void PageState::start(const std::string& canvas) {
+    set_thread_count(1);  // no threads without SharedArrayBuffer, which a plain static server does not enable
+    EmscriptenWebGLContextAttributes attributes;
+    emscripten_webgl_init_context_attributes(&attributes);
+    attributes.majorVersion = 2;
+    attributes.minorVersion = 0;
+    attributes.antialias = false;  // the renderer multisamples its own surface pass; the canvas takes a blit
+    attributes.depth = false;
+    attributes.stencil = false;
+    attributes.preserveDrawingBuffer = true;  // the canvas is read for PNG downloads between frames
+    context_ = emscripten_webgl_create_context(canvas.c_str(), &attributes);
+    if (context_ <= 0) throw std::runtime_error("this browser gives no WebGL2 context");
+    emscripten_webgl_make_context_current(context_);
+    renderer_ = std::make_unique<render::Renderer>();
+}
+
+void PageState::open(const std::string& path) {
+    Mesh input = app::load_mesh_or_default(path);
+    if (input.face_count() == 0)
+        throw std::runtime_error(app::mesh_display_name(path) + ": the mesh has no faces: nothing to draw");
+    input_ = std::move(input);
+    path_ = path;
+    options_.camera.file_up = file_up_axis(path);  // glTF: +y
+    drawing_.reset();
+    prepare();
+    reset_view();
+}
+
+void PageState::prepare() {
+    drawing_.reset();
+    prepared_ = false;
+    if (input_) drawing_ = std::make_unique<app::MeshDrawing>(*input_, options_.settings, options_.smoothing);
+}
+
+void PageState::reset_view() {
+    if (!drawing_) return;
+    glm::vec3 center(0);
+    const render::Camera c =
+        app::make_camera(options_.camera, drawing_->mesh(), drawing_->bounds(), size_, &center, drawing_->units());
+    orbit_.set_view(c.view);
+    orbit_.set_pivot(center);
+    fov_ = c.fov_y_deg;
+}
+
+void PageState::set(const std::string& name, const std::string& value) {
+    const app::AppearanceSetting* a = app::find_appearance_setting(name);
+    if (!a) throw std::runtime_error("unknown setting '" + name + "'");
+    render::RenderSettings s = options_.settings;
+    if (a->flag && (value == "on" || value == "off")) s.*a->flag = value == "on";
+    else if (!a->set || !a->set(s, value)) throw std::runtime_error("--" + name + " expects " + a->expects + ", got '" + value + "'");
+    // The crease angle and the detail decide how the mesh is prepared (app/mesh_drawing.h).
+    const bool again = drawing_ && !drawing_->same_preparation(s, options_.smoothing);
+    options_.settings = s;
+    if (again) prepare();
+}
+
+void PageState::set_view(std::optional<ViewAngles> angles) {
+    options_.camera.view = angles;
+    reset_view();
+}
+
+void PageState::resize(int width, int height) {
+    if (width < 1 || height < 1 || width > 8192 || height > 8192)
+        throw std::runtime_error("--size " + std::to_string(width) + "x" + std::to_string(height) + " is out of range");
+    if (glm::ivec2(width, height) == size_) return;
+    size_ = {width, height};
+    emscripten_set_canvas_element_size("#canvas", width, height);
+}
+
+void PageState::draw() {
+    emscripten_webgl_make_context_current(context_);
+    const int w = size_.x, h = size_.y;
+    if (drawing_ && (!moving_ || !prepared_)) {
+        drawing_->prepare_view(*renderer_, camera(), size_);
+        prepared_ = true;
+    }
+    renderer_->render_offscreen(camera(), options_.settings, w, h);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer_->offscreen_framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void PageState::write(const std::string& path) {
+    if (!drawing_) throw std::runtime_error(path + ": no mesh is open");
+    emscripten_webgl_make_context_current(context_);
+    drawing_->write(*renderer_, camera(), options_.settings, size_, path);
+    prepared_ = true;
+}
+
+}  // namespace kappa::web
