@@ -14,6 +14,7 @@ OUT and prints one line "NAME: ..." with what it saw:
     error:NAME:QUERY:NEXT opens QUERY, which must fail: writes the title and the
                          message shown to NAME.txt; then opens the mesh URL NEXT
                          from the page and saves NAME.png once it is drawn
+    page:NAME:QUERY      the same, saving a screenshot of the whole 1100x640 page (the panel too)
     time:NAME:QUERY      seconds from navigation to "kappa: ready"
     orbit:NAME:QUERY:N   then N drag steps of orbiting; frames a second
 
@@ -61,6 +62,8 @@ class Browser:
         self.session = self.call('Target.attachToTarget', {'targetId': target, 'flatten': True})['sessionId']
         self.call('Page.enable', session=True)
         self.call('Runtime.enable', session=True)
+        self.call('Emulation.setDeviceMetricsOverride', {'width': 1100, 'height': 640, 'deviceScaleFactor': 1,
+                                                         'mobile': False}, session=True)
 
     def call(self, method, params=None, session=False, timeout=120):
         self.next_id += 1
@@ -165,13 +168,18 @@ def run(browser, base, out, action):
         title = browser.wait_title(is_settled)
     if title != 'kappa: ready':
         raise RuntimeError(name + ': ' + title)
+    if kind == 'page':
+        shot = browser.call('Page.captureScreenshot', {'format': 'png'}, session=True)
+        with open(os.path.join(out, name + '.png'), 'wb') as f:
+            f.write(base64.b64decode(shot['data']))
     if kind in ('shot', 'svg', 'error'):
         save_data_url(browser.evaluate('kappaPage.pngDataUrl()'), os.path.join(out, name + '.png'))
     if kind == 'svg':
         with open(os.path.join(out, name + '.svg'), 'w') as f:
             f.write(browser.evaluate('kappaPage.svgText()'))
     if kind == 'time':
-        print('%s: ready %.2f s after navigation' % (name, seconds))
+        times = browser.evaluate('JSON.stringify(kappaPage.times)')
+        print('%s: ready %.2f s after navigation (in the page, seconds: %s)' % (name, seconds, times))
     elif kind == 'orbit':
         # Drags as a person orbits: a pointer event a step, each drawn before the next.
         frames = browser.evaluate('''(async () => {

@@ -15,6 +15,7 @@ let fixedSize = null;       // [w, h] from size=WxH
 let meshName = 'kappa';     // for the names of downloads
 let drawPending = false;
 let readyWhenDrawn = false; // the title turns to ready after the next complete frame
+const times = {};           // seconds: open (read and prepare the mesh), draw (the last frame)
 
 function call(name, ...args) {
   const types = args.map(a => (typeof a === 'number' ? 'number' : 'string'));
@@ -43,7 +44,9 @@ function requestDraw() {
     if (!drawPending) return;
     drawPending = false;
     try {
+      const t0 = performance.now();
       call('kappa_draw');
+      times.draw = (performance.now() - t0) / 1000;
       if (readyWhenDrawn) {
         readyWhenDrawn = false;
         document.title = 'kappa: ready';
@@ -88,7 +91,9 @@ function openBytes(name, bytes) {
   return new Promise(resolve => setTimeout(resolve, 0)).then(() => {
     Module.FS.writeFile('/input/' + name, bytes);
     try {
+      const t0 = performance.now();
       call('kappa_open', name);
+      times.open = (performance.now() - t0) / 1000;
       meshName = name.replace(/\.[^.]*$/, '');
       showMessage(name, false);
       readyWhenDrawn = true;
@@ -353,7 +358,7 @@ window.addEventListener('drop', event => {
 });
 
 // For scripts and tests (tests/web/): what the buttons do, as values.
-window.kappaPage = { openUrl, openBytes, svgText, pngDataUrl, setSetting };
+window.kappaPage = { openUrl, openBytes, svgText, pngDataUrl, setSetting, times };
 
 // --- start -------------------------------------------------------------------------
 

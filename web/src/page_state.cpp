@@ -86,7 +86,11 @@ void PageState::draw() {
         drawing_->prepare_view(*renderer_, camera(), size_);
         prepared_ = true;
     }
-    renderer_->render_offscreen(camera(), options_.settings, w, h);
+    // As the desktop viewer's "fast while moving": no multisampling while the view moves (software
+    // WebGL multisamples slowly); the view at rest is drawn with the settings as they are.
+    render::RenderSettings settings = options_.settings;
+    if (moving_) settings.msaa = false;
+    renderer_->render_offscreen(camera(), settings, w, h);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer_->offscreen_framebuffer());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
