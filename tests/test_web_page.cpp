@@ -82,7 +82,8 @@ TEST_CASE("a truncated PLY shows the CLI's error and the page opens the next mes
     const std::string out = test::temp_dir();
     drive_page(meshes, out, "error:bad:mesh=meshes/truncated.ply\\&size=400x300\\&panel=off:meshes/spot.obj");
 
-    const test::CommandResult r = test::run_command("cd " + meshes + " && " + cli("render truncated.ply -q -o " + out + "/x.png"));
+    const test::CommandResult r =
+        test::run_command("cd " + meshes + " && " + cli("render truncated.ply -q -o " + out + "/x.png"));
     REQUIRE(r.exit_code != 0);
     const std::string cli_line = r.output.substr(0, r.output.find('\n'));  // "kappa: truncated.ply: ..."
     REQUIRE(cli_line.rfind("kappa: truncated.ply: ", 0) == 0);
@@ -125,8 +126,8 @@ TEST_CASE("the page's SVG is the CLI's SVG of the same view", "[web]") {
     CHECK(!layers(page).empty());
     CHECK(std::abs(double(paths(page)) - double(paths(ours))) <= 0.05 * double(paths(ours)) + 2);
     for (const char* name : {"spot", "cli"})
-        REQUIRE(test::run_command(std::string("rsvg-convert -b white -o ") + out + "/" + name + ".svg.png " + out + "/" +
-                                  name + ".svg")
+        REQUIRE(test::run_command(std::string("rsvg-convert -b white -o ") + out + "/" + name + ".svg.png " + out +
+                                  "/" + name + ".svg")
                     .exit_code == 0);
     const render::Image a = render::read_png(out + "/spot.svg.png"), b = render::read_png(out + "/cli.svg.png");
     INFO("page's SVG within 2 px of the CLI's " << render::ink_within(a, b, 2.0f) << ", and back "

@@ -191,12 +191,18 @@ def run(browser, base, out, action):
             at(x0, y0, 'pointerdown');
             await frame();
             const t0 = performance.now();
-            for (let i = 1; i <= %d; ++i) { at(x0 + 4 * i, y0, 'pointermove'); await frame(); }
+            let drawing = 0;
+            for (let i = 1; i <= %d; ++i) {
+                at(x0 + 4 * i, y0, 'pointermove');
+                await frame();
+                drawing += kappaPage.times.draw;
+            }
             const seconds = (performance.now() - t0) / 1000;
             at(x0 + 4 * %d, y0, 'pointerup');
-            return %d / seconds;
-        })()''' % (int(steps), int(steps), int(steps)), timeout=300)
-        print('%s: %.1f frames a second over %s drag steps' % (name, frames, steps))
+            return [%d / seconds, 1000 * drawing / %d];
+        })()''' % (int(steps), int(steps), int(steps), int(steps)), timeout=300)
+        print('%s: %.1f frames a second over %s drag steps (kappa_draw %.0f ms a frame)' %
+              (name, frames[0], steps, frames[1]))
     else:
         print('%s: %s (%.2f s)' % (name, title, seconds))
 

@@ -17,7 +17,9 @@ void write_png(const std::string& path, const Image& image) {
         throw std::runtime_error(path + ": cannot write");
 }
 
-Image read_png(const std::string& path) { throw std::runtime_error(path + ": reading PNG is not in the browser build"); }
+Image read_png(const std::string& path) {
+    throw std::runtime_error(path + ": reading PNG is not in the browser build");
+}
 
 void write_pdf(const std::string& path, const VectorDrawing&) {
     throw std::runtime_error(path + ": PDF output is not in the browser build (use SVG)");

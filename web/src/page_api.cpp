@@ -59,7 +59,9 @@ EMSCRIPTEN_KEEPALIVE int kappa_view(const char* angles) {
         const std::string text = angles;
         if (text.empty()) return page().set_view(std::nullopt);
         const auto angles = kappa::app::parse_view_angles(text);
-        if (!angles) throw std::runtime_error("--view expects two numbers AZ,EL in degrees, EL in [-90, 90], got '" + text + "'");
+        if (!angles)
+            throw std::runtime_error("--view expects two numbers AZ,EL in degrees, EL in [-90, 90], got '" + text +
+                                     "'");
         page().set_view(angles);
     });
 }

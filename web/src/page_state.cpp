@@ -19,7 +19,7 @@ void PageState::start(const std::string& canvas) {
     attributes.antialias = false;  // the renderer multisamples its own surface pass; the canvas takes a blit
     attributes.depth = false;
     attributes.stencil = false;
-    attributes.preserveDrawingBuffer = true;  // the canvas is read for PNG downloads between frames
+    attributes.preserveDrawingBuffer = false;  // PNG downloads draw, then read the canvas in the same task
     context_ = emscripten_webgl_create_context(canvas.c_str(), &attributes);
     if (context_ <= 0) throw std::runtime_error("this browser gives no WebGL2 context");
     emscripten_webgl_make_context_current(context_);
@@ -59,7 +59,8 @@ void PageState::set(const std::string& name, const std::string& value) {
     if (!a) throw std::runtime_error("unknown setting '" + name + "'");
     render::RenderSettings s = options_.settings;
     if (a->flag && (value == "on" || value == "off")) s.*a->flag = value == "on";
-    else if (!a->set || !a->set(s, value)) throw std::runtime_error("--" + name + " expects " + a->expects + ", got '" + value + "'");
+    else if (!a->set || !a->set(s, value))
+        throw std::runtime_error("--" + name + " expects " + a->expects + ", got '" + value + "'");
     // The crease angle and the detail decide how the mesh is prepared (app/mesh_drawing.h).
     const bool again = drawing_ && !drawing_->same_preparation(s, options_.smoothing);
     options_.settings = s;

@@ -72,7 +72,8 @@ std::string settings_json(const render::RenderSettings& s) {
         for (const app::LineToggle& t : g.lines) {
             const render::LineKind* kind = render::find_line_kind(t.kind);
             const bool on = kind && s.lines.*(kind->flag);
-            out += std::string(first_line ? "" : ",") + "{\"kind\":" + quoted(t.kind) + ",\"label\":" + quoted(t.label) +
+            out += std::string(first_line ? "" : ",") + "{\"kind\":" + quoted(t.kind) +
+                   ",\"label\":" + quoted(t.label) +
                    ",\"setting\":" + quoted(t.setting) + ",\"on\":" + (on ? "true" : "false") + "}";
             first_line = false;
         }
