@@ -51,7 +51,8 @@ class Browser:
         self.process = subprocess.Popen(
             [chromium, '--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
              '--remote-debugging-pipe', '--no-first-run', '--no-default-browser-check', '--disable-gpu-sandbox',
-             '--hide-scrollbars', '--mute-audio', '--user-data-dir=' + self.profile, 'about:blank'],
+             '--hide-scrollbars', '--mute-audio', '--user-data-dir=' + self.profile]
+            + os.environ.get('KAPPA_CHROMIUM_FLAGS', '').split() + ['about:blank'],
             close_fds=False, preexec_fn=pipes_at_3_and_4,  # (pass_fds would close 3 and 4 after the dup2)
             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         os.close(to_browser_r)
@@ -105,6 +106,28 @@ class Browser:
                 return title
             time.sleep(0.02)
         raise RuntimeError('the page title is still %r after %d s' % (title, timeout))
+
+    def cpu_seconds(self):
+        """CPU time (user + system) used so far by Chromium's processes (the browser and its children)."""
+        tick = os.sysconf('SC_CLK_TCK')
+        parents, times = {}, {}
+        for pid in os.listdir('/proc'):
+            if not pid.isdigit():
+                continue
+            try:
+                with open('/proc/%s/stat' % pid) as f:
+                    fields = f.read().rsplit(')', 1)[1].split()
+            except OSError:
+                continue
+            parents[int(pid)] = int(fields[1])
+            times[int(pid)] = (int(fields[11]) + int(fields[12])) / tick
+        def in_tree(pid):
+            while pid > 1:
+                if pid == self.process.pid:
+                    return True
+                pid = parents.get(pid, 0)
+            return False
+        return sum(t for pid, t in times.items() if in_tree(pid))
 
     def close(self):
         try:
@@ -182,6 +205,7 @@ def run(browser, base, out, action):
         print('%s: ready %.2f s after navigation (in the page, seconds: %s)' % (name, seconds, times))
     elif kind == 'orbit':
         # Drags as a person orbits: a pointer event a step, each drawn before the next.
+        cpu_before = browser.cpu_seconds()
         frames = browser.evaluate('''(async () => {
             const c = document.getElementById('canvas'), r = c.getBoundingClientRect();
             const at = (x, y, type) => c.dispatchEvent(new PointerEvent(type, {clientX: r.left + x,
@@ -201,8 +225,9 @@ def run(browser, base, out, action):
             at(x0 + 4 * %d, y0, 'pointerup');
             return [%d / seconds, 1000 * drawing / %d];
         })()''' % (int(steps), int(steps), int(steps), int(steps)), timeout=300)
-        print('%s: %.1f frames a second over %s drag steps (kappa_draw %.0f ms a frame)' %
-              (name, frames[0], steps, frames[1]))
+        cpu = browser.cpu_seconds() - cpu_before
+        print('%s: %.1f frames a second over %s drag steps (kappa_draw %.0f ms a frame; Chromium used %.0f ms '
+              'of CPU a frame)' % (name, frames[0], steps, frames[1], 1000 * cpu / int(steps)))
     else:
         print('%s: %s (%.2f s)' % (name, title, seconds))
 
