@@ -74,13 +74,15 @@ TEST_CASE("the page draws what kappa render draws for the same view", "[web]") {
 }
 
 // A PLY cut in the middle of its faces: the page shows the line `kappa
-// render` prints, says so in its title, and then opens the next mesh.
+// render` prints, says so in its title, and then opens the next mesh, picked
+// with its file picker.
 TEST_CASE("a truncated PLY shows the CLI's error and the page opens the next mesh", "[web]") {
     const std::string meshes = mesh_folder({"spot.obj"});
     const std::string bytes = test::read_file(test::shared_mesh("bunny.ply"));
     test::write_file(meshes + "/truncated.ply", bytes.substr(0, bytes.size() * 3 / 4));
     const std::string out = test::temp_dir();
-    drive_page(meshes, out, "error:bad:mesh=meshes/truncated.ply\\&size=400x300\\&panel=off:meshes/spot.obj");
+    drive_page(meshes, out,
+               "error:bad:mesh=meshes/truncated.ply\\&size=400x300\\&panel=off:" + test::shared_mesh("spot.obj"));
 
     const test::CommandResult r =
         test::run_command("cd " + meshes + " && " + cli("render truncated.ply -q -o " + out + "/x.png"));

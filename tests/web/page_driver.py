@@ -12,8 +12,9 @@ OUT and prints one line "NAME: ..." with what it saw:
                          the canvas as NAME.png (the page's own PNG download)
     svg:NAME:QUERY       the same, then the page's SVG download as NAME.svg
     error:NAME:QUERY:NEXT opens QUERY, which must fail: writes the title and the
-                         message shown to NAME.txt; then opens the mesh URL NEXT
-                         from the page and saves NAME.png once it is drawn
+                         message shown to NAME.txt; then opens the mesh file NEXT
+                         (a local path) through the page's file picker and saves
+                         NAME.png once it is drawn
     page:NAME:QUERY      the same, saving a screenshot of the whole 1100x640 page (the panel too)
     time:NAME:QUERY      seconds from navigation to "kappa: ready"
     orbit:NAME:QUERY:N   then N drag steps of orbiting; frames a second
@@ -187,7 +188,13 @@ def run(browser, base, out, action):
         shown = browser.evaluate("document.getElementById('message').textContent")
         with open(os.path.join(out, name + '.txt'), 'w') as f:
             f.write(title + '\n' + shown + '\n')
-        browser.evaluate('kappaPage.openUrl(%s)' % json.dumps(next_mesh))
+        # As a person picks a file: the file input's files set, its change event fired.
+        document = browser.call('DOM.getDocument', session=True)['root']['nodeId']
+        picker = browser.call('DOM.querySelector', {'nodeId': document, 'selector': '#file'}, session=True)
+        browser.call('DOM.setFileInputFiles', {'files': [os.path.abspath(next_mesh)], 'nodeId': picker['nodeId']},
+                     session=True)
+        error_title = title
+        title = browser.wait_title(lambda t: t != error_title)
         title = browser.wait_title(is_settled)
     if title != 'kappa: ready':
         raise RuntimeError(name + ': ' + title)
