@@ -188,6 +188,8 @@ def run(browser, base, out, action):
         shown = browser.evaluate("document.getElementById('message').textContent")
         with open(os.path.join(out, name + '.txt'), 'w') as f:
             f.write(title + '\n' + shown + '\n')
+        if not os.path.isfile(next_mesh):
+            raise RuntimeError(name + ': no file ' + next_mesh + ' to pick')
         # As a person picks a file: the file input's files set, its change event fired.
         document = browser.call('DOM.getDocument', session=True)['root']['nodeId']
         picker = browser.call('DOM.querySelector', {'nodeId': document, 'selector': '#file'}, session=True)
