@@ -1,5 +1,7 @@
 #include "default_view.h"
 
+#include "geometry/scale/denoise.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -283,13 +285,24 @@ ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up) {
     return choose_default_view(turned);
 }
 
-DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up) {
+namespace {
+
+DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up) {
     DefaultView v;
     const glm::vec3 u = up ? *up : choose_up(mesh);
     v.up = view_frame(u).up;
     v.angles = choose_default_view(mesh, v.up);
     v.eye = view_direction(v.angles, v.up);
     return v;
+}
+
+}  // namespace
+
+DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up) {
+    // A noisy scan is read at its noise floor: raw face normals there miss
+    // flat bases and their bending is the noise's.
+    const std::optional<Mesh> denoised = denoised_if_noisy(mesh);
+    return default_view_as_read(denoised ? *denoised : mesh, up);
 }
 
 std::optional<glm::vec3> file_up_axis(const std::string& path) {

@@ -98,7 +98,10 @@ struct DefaultView {
     ViewAngles angles;       // eye = view_direction(angles, up)
 };
 // The whole default view: up = `up` when given (--up, or the file's own
-// convention), else choose_up(mesh); the angles about it.
+// convention), else choose_up(mesh); the angles about it. A noisy mesh
+// (noise level of 8.5% of the edge or more, geometry/scale/denoise.h) is
+// read denoised at its noise floor, so that a scan is seen as its clean
+// shape is.
 DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up = std::nullopt);
 
 // The up axis a file's format fixes, by its extension: +y for glTF (.gltf,

@@ -2,6 +2,7 @@
 
 #include "geometry/curvature/feature_size.h"
 #include "geometry/scale/auto_smoothing.h"
+#include "geometry/scale/denoise.h"
 #include "geometry/scale/noise_level.h"
 #include "geometry/scale/pixel_scale.h"
 #include "geometry/scale/raw_consistency.h"
@@ -32,25 +33,7 @@ constexpr float kIrregularFloorEdges = 2.0f;
 
 namespace {
 
-// Meshes are denoised for drawing from a noise level of 8.5% of the edge
-// length. The noise estimate (geometry/scale/noise_level.h) cannot tell
-// noise from true detail at the scale of the edges: dragon-50k (a decimated
-// scan, rich in such detail) measures 7.0%, and denoised it lost the
-// scallops of its back and drew broken suggestive contours; the bunny scan
-// measures 2.5% and its drawing agrees best with bunny-1M's as it is (99% /
-// 97.6%; denoised 97% / 93%). Synthetic normal noise of 0.1 edges measures
-// 10%, and denoising brings its drawings from 89% to 95% on 82k faces.
-constexpr float kDenoiseNoise = 0.085f;
-
-// Denoising at the noise floor F runs in passes, each fitting on the
-// normals of the last pass's cleaner surface, at the scale of the scale
-// space's level 1 (3 mean edges: one level fitted a pass), as many as make
-// the variances add up to about F^2 (one pass at F below 1.22 x 3 edges).
-// Measured on bench_render_detail's irregular 82k-face shape with noise of
-// 0.33 edges at 800 px, agreement with the clean drawing: one pass at F
-// 78% / 79%, at F / 2 or 2F worse (53-65%); two passes at level 1 85% / 87%,
-// as three at F / sqrt(3) (86% / 88%, twice the time); more passes no better.
-constexpr int kDenoiseLevel = 1;
+// Noisy meshes are drawn denoised: geometry/scale/denoise.h.
 
 NoiseLevel set_floors(DetailSource& source, const Mesh& mesh, const SurfaceFields& raw, const VertexFaces& adjacency) {
     const NoiseLevel noise = estimate_noise_level(mesh, adjacency, raw.normals);
@@ -69,19 +52,8 @@ DetailSource make_detail_source(const Mesh& mesh, const SurfaceFields& raw, cons
     const NoiseLevel noise = set_floors(source, mesh, raw, *adjacency);
     if (noise.relative >= kDenoiseNoise && source.noise_floor > 0 && !source.space.empty()) {
         source.denoised_at = source.noise_floor;
-        source.denoised.faces = mesh.faces;
-        const float level = source.space.level_scale(kDenoiseLevel);
-        const float variances = source.noise_floor * source.noise_floor / (level * level);
-        const int passes = std::max(1, int(std::lround(variances)));
-        const std::vector<float> sigma(mesh.vertex_count(), passes == 1 ? source.noise_floor : level);
-        for (int pass = 0; pass < passes; ++pass) {
-            const bool first = pass == 0;
-            source.denoised.positions =
-                surface_at_scale(first ? mesh : source.denoised, source.space, first ? raw : source.denoised_raw,
-                                 sigma).positions;
-            source.denoised_raw = compute_surface_normals(source.denoised, nullptr, adjacency);
-            source.space = build_scale_space(source.denoised);
-        }
+        denoise_at_floor(mesh, raw, *adjacency, source.noise_floor, source.space, source.denoised,
+                         source.denoised_raw);
         set_floors(source, source.denoised, source.denoised_raw, *adjacency);
     }
     return source;
