@@ -6,11 +6,9 @@
 //   build/bench_cgal_jet [MESH|torus] [--runs N] [--kappa]
 //
 // MESH as bench_estimators (bench_mesh.h; default ../shared/meshes/bunny.ply).
-// Timed, per vertex: its 2-ring (kappa's vertex adjacency and RingCollector,
-// the vertex first, as CGAL takes the first point as the origin; grown a
-// ring at a time, up to 4, where it has fewer than the 15 points a degree-4
-// fit needs) and CGAL's fit with d_fitting = 4, d_monge = 3 (principal
-// curvatures and directions and the third-order coefficients, i.e. C). Not
+// Timed, per vertex: its 2-ring and CGAL's fit with d_fitting = 4, d_monge =
+// 3 (principal curvatures and directions and the third-order coefficients,
+// i.e. C), as cgal_jet_estimate.h describes them. Not
 // timed: loading or building the mesh and the adjacency. Like time_it: one
 // warm-up, then N runs (default 1), median wall time and time per vertex.
 //
@@ -21,6 +19,7 @@
 // degree 4 on the 2-ring (CGAL's work). Its inputs (Max normals, areas) are
 // built once, untimed.
 #include "bench_mesh.h"
+#include "cgal_jet_estimate.h"
 #include "median.h"
 
 #include "tests/analytic_estimate.h"
@@ -29,9 +28,6 @@
 #include "geometry/curvature/rings.h"
 #include "geometry/parallel/parallel.h"
 #include "geometry/mesh/vertex_faces.h"
-
-#include <CGAL/Monge_via_jet_fitting.h>
-#include <CGAL/Simple_cartesian.h>
 
 #include <chrono>
 #include <cstdio>
@@ -45,14 +41,14 @@ using namespace kappa;
 
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using MongeFit = CGAL::Monge_via_jet_fitting<Kernel>;
-
-constexpr std::size_t kFitDegree = 4, kMongeDegree = 3;
-constexpr std::size_t kPointsNeeded = (kFitDegree + 1) * (kFitDegree + 2) / 2;
+using bench::CgalKernel;
+using bench::CgalMongeFit;
+using bench::kCgalFitDegree;
+using bench::kCgalMongeDegree;
+using bench::kCgalPointsNeeded;
 
 struct CgalResult {
-    size_t skipped = 0;      // still fewer than kPointsNeeded points at 4 rings
+    size_t skipped = 0;      // still fewer than kCgalPointsNeeded points at 4 rings
     double mean_k2 = 0;      // mean of k1^2 + k2^2 (orientation-free checksum)
     double mean_b2 = 0;      // mean of b0^2 + ... + b3^2 (third order)
     double mean_points = 0;  // fitted points per vertex
@@ -62,26 +58,15 @@ CgalResult cgal_fits(const Mesh& mesh, const VertexAdjacency& adj) {
     CgalResult r;
     const size_t nv = mesh.vertex_count();
     RingCollector rings(nv);
-    std::vector<Kernel::Point_3> points;
+    std::vector<CgalKernel::Point_3> points;
     size_t fitted = 0, point_sum = 0;
     for (size_t v = 0; v < nv; ++v) {
-        const std::vector<uint32_t>& ring = rings.collect(adj, uint32_t(v), 2);
-        for (int k = 2; ring.size() < kPointsNeeded && k < 4;) {
-            const size_t before = ring.size();
-            k = rings.grow(adj);
-            if (ring.size() == before) break;
-        }
-        if (ring.size() < kPointsNeeded) {
+        if (!bench::cgal_ring_points(mesh, adj, rings, uint32_t(v), points)) {
             ++r.skipped;
             continue;
         }
-        points.clear();
-        for (uint32_t q : ring) {
-            const glm::vec3& p = mesh.positions[q];
-            points.emplace_back(p.x, p.y, p.z);
-        }
-        MongeFit fit;
-        const MongeFit::Monge_form m = fit(points.begin(), points.end(), kFitDegree, kMongeDegree);
+        CgalMongeFit fit;
+        const CgalMongeFit::Monge_form m = fit(points.begin(), points.end(), kCgalFitDegree, kCgalMongeDegree);
         const double k1 = m.principal_curvatures(0), k2 = m.principal_curvatures(1);
         double b2 = 0;
         for (int i = 0; i < 4; ++i) b2 += m.third_order_coefficients(i) * m.third_order_coefficients(i);
@@ -161,6 +146,6 @@ int main(int argc, char** argv) {
     for (size_t v = 0; v < nv; ++v) isolated += vf.degree(v) == 0;
     std::printf("CGAL: %zu vertices skipped (< %zu points in 4 rings; %zu of them in no face), %.1f points per fit, "
                 "mean k1^2+k2^2 %.6g, mean |b|^2 %.6g\n",
-                cgal.skipped, kPointsNeeded, isolated, cgal.mean_points, cgal.mean_k2, cgal.mean_b2);
+                cgal.skipped, kCgalPointsNeeded, isolated, cgal.mean_points, cgal.mean_k2, cgal.mean_b2);
     return 0;
 }
