@@ -153,7 +153,7 @@ private:
             drawing_.reset();
             drawing_ = std::make_unique<MeshDrawing>(*mesh_, o.settings, o.smoothing);
         }
-        const render::Camera camera = make_camera(o.camera, drawing_->mesh(), drawing_->bounds(), o.size, nullptr, drawing_->units());
+        const render::Camera camera = make_camera(o.camera, *drawing_, o.size);
         render::Renderer& renderer = renderer_();
         write_complete(job.output, [&](const std::string& path) {
             drawing_->write(renderer, camera, o.settings, o.size, path);

@@ -111,7 +111,7 @@ int run_render(int argc, char** argv) {
         glm::vec3 orbit_center;
         glm::vec3 up_axis(0, 1, 0);
         const render::Camera camera =
-            make_camera(options.camera, mesh, drawing.bounds(), size, &orbit_center, drawing.units(), &up_axis);
+            make_camera(options.camera, drawing, size, &orbit_center, &up_axis);
 
         const auto t_context = Clock::now();
         std::unique_ptr<render::HeadlessContext> context;

@@ -5,6 +5,7 @@
 
 #include "geometry/curvature/feature_size.h"
 #include "geometry/lines/line_extraction.h"
+#include "geometry/scale/denoise.h"
 #include "render/fields/field_upload.h"
 #include "render/image/image_writer.h"
 #include "render/vector/vector_view.h"
@@ -84,6 +85,15 @@ float MeshDrawing::prepare_view(render::Renderer& renderer, const render::Camera
     return prepared_fs_ = view_.feature_size;
 }
 
+const Mesh& MeshDrawing::view_surface() {
+    // The detail pipeline estimated the noise of the same normals (compute_surface_normals) and
+    // denoised the mesh when noisy: no need to do it again.
+    if (settings_.detail > 0 && !smoothing_.automatic)
+        return detail_source_.denoised_at > 0 ? detail_source_.denoised : drawn_.mesh;
+    if (!view_denoised_) view_denoised_ = denoised_if_noisy(drawn_.mesh);
+    return *view_denoised_ ? **view_denoised_ : drawn_.mesh;
+}
+
 bool MeshDrawing::same_preparation(const render::RenderSettings& s, const SmoothingOptions& o) const {
     return s.crease_angle == settings_.crease_angle && s.detail == settings_.detail && same_smoothing(o, smoothing_);
 }
@@ -118,6 +128,12 @@ void MeshDrawing::write(render::Renderer& renderer, const render::Camera& camera
         return;
     }
     render::write_image(path, image(renderer, camera, settings, size));
+}
+
+render::Camera make_camera(const CameraOptions& options, MeshDrawing& drawing, glm::ivec2 size,
+                           glm::vec3* orbit_center, glm::vec3* up_axis) {
+    const Mesh& surface = options.uses_default_view() ? drawing.view_surface() : drawing.mesh();
+    return make_camera(options, surface, drawing.bounds(), size, orbit_center, drawing.units(), up_axis);
 }
 
 }  // namespace kappa::app

@@ -6,6 +6,8 @@
 // updated per view when they follow the view.
 #pragma once
 
+#include "render_options.h"
+
 #include "geometry/mesh/creases.h"
 #include "geometry/mesh/drawing_units.h"
 #include "geometry/surface_analysis.h"
@@ -18,6 +20,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +47,10 @@ public:
     const StageTimes& times() const { return times_; }
     double scale_seconds() const { return scale_s_; }  // feature size, or the scale space with detail
     float noise_floor() const { return units_.length_to_model(detail_source_.noise_floor); }  // model units
+    // The surface the default view reads (make_camera): mesh(), denoised at its noise floor when it
+    // is noisy (geometry/scale/denoise.h). With detail, the detail pipeline's own denoised mesh and
+    // noise estimate; without, estimated on first use.
+    const Mesh& view_surface();
 
     // Uploads the fields of this view to `renderer` (the whole mesh on the
     // first view; nothing when this view was the last one prepared). The
@@ -82,6 +89,7 @@ private:
     StageTimes times_;
     SurfaceFields fields_;
     render::DetailSource detail_source_;
+    std::optional<std::optional<Mesh>> view_denoised_;  // without detail: denoised_if_noisy, once asked
     float fs_ = 0;  // without detail
     double scale_s_ = 0;
     std::vector<CreaseEdge> crease_edges_;  // for strokes, made on first use
@@ -94,5 +102,10 @@ private:
     float prepared_fov_ = 0, prepared_fs_ = 0;
     glm::ivec2 prepared_size_{0};
 };
+
+// make_camera (render_options.h) for a drawing: its bounds and units, and its view_surface, asked
+// for only when the camera is the default view.
+render::Camera make_camera(const CameraOptions& options, MeshDrawing& drawing, glm::ivec2 size,
+                           glm::vec3* orbit_center = nullptr, glm::vec3* up_axis = nullptr);
 
 }  // namespace kappa::app

@@ -108,7 +108,7 @@ render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const
     if (!c.has_eye) {
         const std::optional<glm::vec3> up = c.has_up ? std::optional<glm::vec3>(c.up) : c.file_up;
         if (!c.view) {
-            const DefaultView v = default_view(mesh, up);
+            const DefaultView v = default_view_as_read(mesh, up);
             if (up_axis) *up_axis = v.up;
             camera = render::Camera::framing(bounds, c.fov, aspect, v.eye, v.up);  // = Camera::default_view
         } else {

@@ -30,6 +30,9 @@ struct CameraOptions {
     // The up axis the mesh file's format fixes (file_up_axis of its path:
     // +y for glTF), used by the default view when --up is not given.
     std::optional<glm::vec3> file_up;
+
+    // Whether the camera is the default view (no --xf, --eye or --view): make_camera reads the surface then.
+    bool uses_default_view() const { return xf_path.empty() && !has_eye && !view; }
 };
 
 struct RenderOptions {
@@ -62,7 +65,8 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b);
 // default view's, else +y; model coordinates): the axis a turntable of the
 // default view or of --view turns about (app/cmd_render.cpp). Throws
 // cli::UsageError for a degenerate eye/target/up and std::runtime_error
-// for an unreadable --xf file. mesh, bounds and the result are in drawing
+// for an unreadable --xf file. mesh: the surface as the default view reads it
+// (MeshDrawing::view_surface: denoised when noisy). mesh, bounds and the result are in drawing
 // units (geometry/mesh/drawing_units.h: MeshDrawing::units()); --eye, --target
 // and --xf, in model units, are converted.
 render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,

@@ -71,7 +71,7 @@ void draw_view(const py::handle& V, const py::handle& F, const py::object& camer
     const app::RenderOptions o = render_options(camera, settings);
     py::gil_scoped_release unlocked;
     app::MeshDrawing drawing(std::move(mesh), o.settings, o.smoothing);
-    const render::Camera view = app::make_camera(o.camera, drawing.mesh(), drawing.bounds(), o.size, nullptr, drawing.units());
+    const render::Camera view = app::make_camera(o.camera, drawing, o.size);
     CurrentRenderer current;
     draw(drawing, current.renderer(), view, o);
 }

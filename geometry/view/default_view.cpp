@@ -285,8 +285,6 @@ ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up) {
     return choose_default_view(turned);
 }
 
-namespace {
-
 DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up) {
     DefaultView v;
     const glm::vec3 u = up ? *up : choose_up(mesh);
@@ -295,8 +293,6 @@ DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up) 
     v.eye = view_direction(v.angles, v.up);
     return v;
 }
-
-}  // namespace
 
 DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up) {
     // A noisy scan is read at its noise floor: raw face normals there miss

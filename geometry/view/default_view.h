@@ -103,6 +103,10 @@ struct DefaultView {
 // read denoised at its noise floor, so that a scan is seen as its clean
 // shape is.
 DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up = std::nullopt);
+// The same for a mesh read as given: the caller has denoised it already, or
+// knows that it is not noisy (app/mesh_drawing.h's view_surface, which takes
+// both from the detail pipeline's own noise estimate).
+DefaultView default_view_as_read(const Mesh& surface, std::optional<glm::vec3> up = std::nullopt);
 
 // The up axis a file's format fixes, by its extension: +y for glTF (.gltf,
 // .glb: the reader gives the specification's +y up); none for the others.

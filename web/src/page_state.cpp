@@ -48,7 +48,7 @@ void PageState::reset_view() {
     if (!drawing_) return;
     glm::vec3 center(0);
     const render::Camera c =
-        app::make_camera(options_.camera, drawing_->mesh(), drawing_->bounds(), size_, &center, drawing_->units());
+        app::make_camera(options_.camera, *drawing_, size_, &center);
     orbit_.set_view(c.view);
     orbit_.set_pivot(center);
     fov_ = c.fov_y_deg;
