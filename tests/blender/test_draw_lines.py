@@ -26,11 +26,17 @@ def check_agreement(scene, objects, frame_number=None):
     assert strokes_in_render >= AGREE and render_in_strokes >= AGREE
 
 
-def test_suzanne_strokes_agree_with_kappa_render():
-    scene = bpy.context.scene
-    monkey = bt.suzanne(scene)
+def selected_monkey_in_view(scene, levels=2):
+    """A subdivided Suzanne, selected alone, seen by the scene camera from its front left."""
+    monkey = bt.suzanne(scene, levels=levels)
     bt.add_camera(scene, (2.2, -3.4, 1.4), (0, 0, 0.1))
     bt.select_only(monkey)
+    return monkey
+
+
+def test_suzanne_strokes_agree_with_kappa_render():
+    scene = bpy.context.scene
+    monkey = selected_monkey_in_view(scene)
     assert bpy.ops.kappa.draw_lines() == {"FINISHED"}
     layers = bt.gp_strokes()
     assert {"contours", "suggestive", "creases"} <= set(layers), layers.keys()
@@ -41,9 +47,7 @@ def test_suzanne_strokes_agree_with_kappa_render():
 
 def test_hatching_strokes_agree_with_kappa_render():
     scene = bpy.context.scene
-    monkey = bt.suzanne(scene)
-    bt.add_camera(scene, (2.2, -3.4, 1.4), (0, 0, 0.1))
-    bt.select_only(monkey)
+    monkey = selected_monkey_in_view(scene)
     props = scene.kappa_lines
     for kind in settings.chosen_lines(props, bt.kappa):
         setattr(props, settings.line_property(kind), False)  # the hatching alone, drawn and rendered
@@ -57,9 +61,7 @@ def test_hatching_strokes_agree_with_kappa_render():
 
 def test_hidden_lines_on_their_layer_where_kappa_render_draws_them():
     scene = bpy.context.scene
-    monkey = bt.suzanne(scene)
-    bt.add_camera(scene, (2.2, -3.4, 1.4), (0, 0, 0.1))
-    bt.select_only(monkey)
+    monkey = selected_monkey_in_view(scene)
     props = scene.kappa_lines
     props.hidden_lines = True
     assert bpy.ops.kappa.draw_lines() == {"FINISHED"}
@@ -129,9 +131,7 @@ def test_points_sit_on_the_surface_pulled_toward_the_camera():
 
 def test_fading_gives_strength_or_pressure():
     scene = bpy.context.scene
-    monkey = bt.suzanne(scene, levels=1)
-    bt.add_camera(scene, (2.2, -3.4, 1.4), (0, 0, 0.1))
-    bt.select_only(monkey)
+    monkey = selected_monkey_in_view(scene, levels=1)
     props = scene.kappa_lines
     props.line_width = 2.5  # Grease Pencil's whole pixels: width 3, pressure 2.5 / 3
     bpy.ops.kappa.draw_lines()
