@@ -22,15 +22,8 @@ target_include_directories(kappa_glad PUBLIC ${KAPPA_GLAD_DIR}/include)
 set_target_properties(kappa_glad PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # --- shaders embedded as string literals --------------------------------------
-file(GLOB_RECURSE KAPPA_SHADER_FILES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/*.glsl)
-set(KAPPA_SHADER_CPP ${CMAKE_BINARY_DIR}/generated/embedded_shaders.cpp)
-add_custom_command(
-  OUTPUT ${KAPPA_SHADER_CPP}
-  COMMAND ${CMAKE_COMMAND} -DOUTPUT=${KAPPA_SHADER_CPP} -DSHADER_DIR=${CMAKE_SOURCE_DIR}/shaders
-          -P ${CMAKE_SOURCE_DIR}/cmake/render_embed_shaders.cmake
-  DEPENDS ${KAPPA_SHADER_FILES} ${CMAKE_SOURCE_DIR}/cmake/render_embed_shaders.cmake
-  COMMENT "Embedding shaders/*/*.glsl"
-  VERBATIM)
+include(${CMAKE_SOURCE_DIR}/cmake/embedded_shaders.cmake)
+kappa_embed_shaders(${CMAKE_SOURCE_DIR} KAPPA_SHADER_CPP)
 
 # --- the library ----------------------------------------------------------------
 add_library(kappa_render STATIC ${KAPPA_RENDER_SOURCES} ${KAPPA_SHADER_CPP})
