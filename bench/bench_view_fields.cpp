@@ -8,7 +8,9 @@
 // 10 degrees about the model's up axis, as an orbit in the viewer.
 // Medians of wall and process CPU time (time_it.h).
 //
-//   build/bench_view_fields [MESH] [--runs N] [--threads N] [--detail PX] [--size WxH]
+//   build/bench_view_fields [MESH] [--runs N] [--threads N] [--detail PX] [--size WxH] [--views-only]
+//
+// --views-only: the curvature job, the first view and the new views, without the stages.
 //
 // Default MESH: ../shared/meshes/bunny-1M.ply next to the repository; the
 // camera is kappa's default view of the mesh.
@@ -37,10 +39,12 @@ int main(int argc, char** argv) {
     std::string path = std::string(KAPPA_SOURCE_DIR) + "/../shared/meshes/bunny-1M.ply";
     int runs = 5, width = 1024, height = 768;
     float detail = 12;  // RenderSettings::detail
+    bool views_only = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--runs") && i + 1 < argc) runs = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) set_thread_count(unsigned(std::atoi(argv[++i])));
         else if (!std::strcmp(argv[i], "--detail") && i + 1 < argc) detail = float(std::atof(argv[++i]));
+        else if (!std::strcmp(argv[i], "--views-only")) views_only = true;
         else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
         else path = argv[i];
     }
@@ -59,29 +63,33 @@ int main(int argc, char** argv) {
     bench::time_it("curvature job", runs, [&] { raw = compute_surface_fields(mesh); });
 
     render::DetailSource source;
-    bench::time_it("detail source", runs, [&] { source = render::make_detail_source(mesh, raw, &adjacency); });
-    render::ViewScales scales;
-    bench::time_it("view scales", runs, [&] {
-        scales = render::view_scales(mesh, source, camera, height, detail);
-    });
-    // Fit every level the view needs once, so the rows below time the per-vertex blends.
-    render::DetailFields view = render::detail_fields(mesh, source, raw, scales);
-    bench::time_it("fine normals", runs, [&] { (void)normals_at_scale(mesh, source.space, raw, scales.fine); });
-    bench::time_it("fields at scale", runs, [&] { view.fields = fields_at_scale(mesh, source.space, raw, scales.sigma); });
-    bench::time_it("feature size", runs, [&] { (void)feature_size(mesh, view.fields); });
-    bench::time_it("upload, CPU half", runs, [&] {
-        (void)render::prepare_field_upload(view.mesh, view.fields, view.feature_size, view.fine_normals, clusters, true);
-    });
+    if (views_only) source = render::make_detail_source(mesh, raw, &adjacency);
+    else bench::time_it("detail source", runs, [&] { source = render::make_detail_source(mesh, raw, &adjacency); });
+    if (!views_only) {
+        render::ViewScales scales;
+        bench::time_it("view scales", runs, [&] {
+            scales = render::view_scales(mesh, source, camera, height, detail);
+        });
+        // Fit every level the view needs once, so the rows below time the per-vertex blends.
+        render::DetailFields view = render::detail_fields(mesh, source, raw, scales);
+        bench::time_it("fine normals", runs, [&] { (void)normals_at_scale(mesh, source.space, raw, scales.fine); });
+        bench::time_it("fields at scale", runs, [&] { view.fields = fields_at_scale(mesh, source.space, raw, scales.sigma); });
+        bench::time_it("feature size", runs, [&] { (void)feature_size(mesh, view.fields); });
+        bench::time_it("upload, CPU half", runs, [&] {
+            (void)render::prepare_field_upload(view.mesh, view.fields, view.feature_size, view.fine_normals, clusters);
+        });
+    }
 
     bench::time_it("first view (levels fit)", runs, [&] {
         render::DetailSource fresh = render::make_detail_source(mesh, raw, &adjacency);
         const render::DetailFields d = render::detail_fields(mesh, fresh, raw, camera, height, detail);
-        (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters, true);
+        (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters);
     });
+    if (views_only) (void)render::detail_fields(mesh, source, raw, camera, height, detail);  // the levels it needs
     bench::time_it("new view (levels fitted)", runs, [&] {
         next_view();
         const render::DetailFields d = render::detail_fields(mesh, source, raw, camera, height, detail);
-        (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters, true);
+        (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters);
     });
     return 0;
 }

@@ -157,7 +157,7 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
         done_completion_ = std::move(c);
     }
     const render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *fields, scales);
-    out.upload = render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, *r.clusters, false);
+    out.upload = render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, *r.clusters);
     return out;
 }
 

@@ -1,6 +1,5 @@
 #include "render/fields/field_upload.h"
 
-#include "geometry/mesh/surface_samples.h"
 #include "geometry/parallel/parallel.h"
 #include "render/surface/colormap.h"
 #include "render/fields/mesh_buffers.h"
@@ -12,8 +11,7 @@
 namespace kappa::render {
 
 FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
-                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
-                                 bool hatch_seeds) {
+                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters) {
     const size_t n = mesh.vertex_count();
     if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
         fields.d2.size() != n || fields.dcurv.size() != n)
@@ -35,12 +33,6 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
                          own_fine ? fine_normals[v] : fields.normals[v]};
     });
     u.clusters = make_mesh_clusters(mesh, fields, clusters, feature_size, fine_normals);
-    if (hatch_seeds) {
-        const SurfaceSamples samples = sample_surface(mesh, fields, kHatchSeeds);
-        u.has_seeds = true;
-        u.seeds.reserve(samples.points.size());
-        for (const SurfaceSample& p : samples.points) u.seeds.push_back({p.position, p.normal});
-    }
     return u;
 }
 

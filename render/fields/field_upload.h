@@ -1,6 +1,6 @@
 // The CPU half of putting curvature fields on the GPU: the interleaved
-// vertex records, the culling bounds of the contour pass, colour-map ranges
-// and (optionally) hatching seeds. No OpenGL: it can be built on a worker
+// vertex records, the culling bounds of the contour pass and colour-map
+// ranges. No OpenGL: it can be built on a worker
 // thread (the viewer prepares fields at a new scale there) and handed to
 // MeshBuffers::upload on the GL thread.
 #pragma once
@@ -32,30 +32,19 @@ struct GpuVertex {
 // Compute passes read the records as 22 floats (shaders/common/mesh_vertex_fetch.glsl).
 static_assert(sizeof(GpuVertex) == 22 * sizeof(float), "GpuVertex must stay 22 packed floats");
 
-// A seed of streamline hatching (render/hatching/hatch_streamlines.h): one of the
-// first kHatchSeeds surface samples (geometry/mesh/surface_samples.h, in their
-// random order: every prefix is a uniform sample).
-struct HatchSeed {
-    glm::vec3 position, normal;
-};
-constexpr size_t kHatchSeeds = 32768;
-
 struct FieldUpload {
     std::vector<GpuVertex> vertices;  // in FaceClusters::vertex_order
     MeshClusters clusters;
     std::array<float, 7> ranges{};  // robust colour-map range per ColorMap
     float feature_size = 1;
-    bool has_seeds = false;        // false: keep the hatching seeds already uploaded
-    std::vector<HatchSeed> seeds;
 };
 
 // fields: one entry per vertex; fine_normals: empty (use fields.normals) or
 // one per vertex; clusters: the face clusters the triangles were uploaded
-// in (the vertex records come in its vertex_order); hatch_seeds: also draw new hatching seeds.
+// in (the vertex records come in its vertex_order).
 // Throws std::invalid_argument when sizes do not match the mesh.
 FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
-                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
-                                 bool hatch_seeds);
+                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters);
 
 // The crease pass's vertex data (MeshBuffers::set_creases): for each crease
 // of the split mesh, both end points, each with the unit normals of the

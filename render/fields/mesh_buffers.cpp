@@ -94,14 +94,16 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     cpu_boundary_edges_ = std::move(edges);
 
     glBindVertexArray(0);
-    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));
+    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
+    seeds_stale_ = true;
 }
 
 void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                                 const std::vector<glm::vec3>& fine_normals) {
     if (mesh.vertex_count() != vertex_count_ || mesh.face_count() != face_count_)
         throw std::invalid_argument("MeshBuffers: new fields for a different mesh");
-    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_, true));
+    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
+    seeds_stale_ = true;
 }
 
 // The CPU copy of what the shaders read (for CPU line extraction and strokes).
@@ -133,8 +135,18 @@ void MeshBuffers::upload(FieldUpload&& u) {
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(cpu_mesh_.positions.size() * sizeof(glm::vec3)),
                     cpu_mesh_.positions.data());
     clusters_ = std::move(u.clusters);
-    if (u.has_seeds) hatch_seeds_ = std::move(u.seeds);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+const std::vector<MeshBuffers::Seed>& MeshBuffers::hatch_seeds() {
+    if (seeds_stale_) {
+        const SurfaceSamples samples = sample_surface(cpu_mesh_, cpu_fields_, kHatchSeeds);
+        hatch_seeds_.clear();
+        hatch_seeds_.reserve(samples.points.size());
+        for (const SurfaceSample& p : samples.points) hatch_seeds_.push_back({p.position, p.normal});
+        seeds_stale_ = false;
+    }
+    return hatch_seeds_;
 }
 
 MeshBuffers::~MeshBuffers() {

@@ -77,9 +77,18 @@ public:
     size_t vertex_count() const { return vertex_count_; }
     size_t face_count() const { return face_count_; }
     size_t boundary_edge_count() const { return boundary_edges_; }
-    // The seeds of streamline hatching (render/hatching/hatch_streamlines.h), in their random order.
-    using Seed = HatchSeed;
-    const std::vector<Seed>& hatch_seeds() const { return hatch_seeds_; }
+    // The seeds of streamline hatching (render/hatching/hatch_streamlines.h):
+    // the first kHatchSeeds surface samples of the drawn surface
+    // (geometry/mesh/surface_samples.h, in their random order: every prefix
+    // is a uniform sample). Drawn when first asked for after the mesh was
+    // made or update_fields() gave it new fields (an upload() from a worker
+    // keeps them, so strokes stay put while a viewer's fields follow the
+    // view): drawings without hatching never pay for them.
+    struct Seed {
+        glm::vec3 position, normal;
+    };
+    static constexpr size_t kHatchSeeds = 32768;
+    const std::vector<Seed>& hatch_seeds();
     float feature_size() const { return feature_size_; }
     const BoundingSphere& bounds() const { return bounds_; }
     // Whether back faces may be culled, and the holes to draw them in (geometry/culling/back_faces.h).
@@ -98,6 +107,7 @@ private:
     size_t creases_ = 0;
     size_t vertex_count_ = 0, face_count_ = 0, boundary_edges_ = 0;
     std::vector<Seed> hatch_seeds_;
+    bool seeds_stale_ = true;
     float feature_size_ = 1;
     BoundingSphere bounds_;
     BackFaceVisibility back_faces_;
