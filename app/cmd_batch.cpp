@@ -4,6 +4,7 @@
 #include "batch.h"
 #include "cli_options.h"
 #include "commands.h"
+#include "heap_tuning.h"
 
 #include "render/gl/egl_context.h"
 #include "render/renderer.h"
@@ -15,6 +16,7 @@
 namespace kappa::app {
 
 int run_batch(int argc, char** argv) {
+    keep_large_blocks();  // views reuse the last view's memory (app/heap_tuning.h)
     std::string manifest, failures_path;
     int shard = 0, shards = 1;
     bool force = false, quiet = false;

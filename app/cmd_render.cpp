@@ -5,6 +5,7 @@
 // 8-bit RGBA PNG.
 #include "cli_options.h"
 #include "commands.h"
+#include "heap_tuning.h"
 #include "mesh_drawing.h"
 #include "mesh_source.h"
 #include "progress_bar.h"
@@ -45,6 +46,7 @@ std::string numbered_path(const std::string& path, int index) {
 }  // namespace
 
 int run_render(int argc, char** argv) {
+    keep_large_blocks();  // views reuse the last view's memory (app/heap_tuning.h)
     std::string mesh_path, out_path;
     int turntable = 0;
     bool quiet = false;

@@ -6,6 +6,7 @@
 #include "appearance_settings.h"
 #include "cli_options.h"
 #include "commands.h"
+#include "heap_tuning.h"
 
 #include "app/viewer/input_script.h"
 #include "app/viewer/shortcuts.h"
@@ -36,6 +37,7 @@ std::string keys_help() {
 }  // namespace
 
 int run_view(int argc, char** argv) {
+    keep_large_blocks();  // views reuse the last view's memory (app/heap_tuning.h)
     viewer::ViewerOptions o;
     bool no_panel = false;
     std::string script_path;

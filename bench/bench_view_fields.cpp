@@ -16,6 +16,8 @@
 // camera is kappa's default view of the mesh.
 #include "time_it.h"
 
+#include "app/heap_tuning.h"
+
 #include "geometry/culling/face_clusters.h"
 #include "geometry/curvature/feature_size.h"
 #include "geometry/io/mesh_io.h"
@@ -36,6 +38,7 @@
 using namespace kappa;
 
 int main(int argc, char** argv) {
+    kappa::app::keep_large_blocks();  // as kappa render and kappa view
     std::string path = std::string(KAPPA_SOURCE_DIR) + "/../shared/meshes/bunny-1M.ply";
     int runs = 5, width = 1024, height = 768;
     float detail = 12;  // RenderSettings::detail
