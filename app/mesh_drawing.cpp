@@ -94,6 +94,8 @@ const Mesh& MeshDrawing::view_surface() {
     return *view_denoised_ ? **view_denoised_ : drawn_.mesh;
 }
 
+bool MeshDrawing::view_surface_denoised() { return &view_surface() != &drawn_.mesh; }
+
 bool MeshDrawing::same_preparation(const render::RenderSettings& s, const SmoothingOptions& o) const {
     return s.crease_angle == settings_.crease_angle && s.detail == settings_.detail && same_smoothing(o, smoothing_);
 }
@@ -132,8 +134,10 @@ void MeshDrawing::write(render::Renderer& renderer, const render::Camera& camera
 
 render::Camera make_camera(const CameraOptions& options, MeshDrawing& drawing, glm::ivec2 size,
                            glm::vec3* orbit_center, glm::vec3* up_axis) {
-    const Mesh& surface = options.uses_default_view() ? drawing.view_surface() : drawing.mesh();
-    return make_camera(options, surface, drawing.bounds(), size, orbit_center, drawing.units(), up_axis);
+    const bool default_view = options.uses_default_view();
+    const Mesh& surface = default_view ? drawing.view_surface() : drawing.mesh();
+    return make_camera(options, surface, drawing.bounds(), size, orbit_center, drawing.units(), up_axis,
+                       default_view && drawing.view_surface_denoised());
 }
 
 }  // namespace kappa::app

@@ -51,6 +51,9 @@ public:
     // is noisy (geometry/scale/denoise.h). With detail, the detail pipeline's own denoised mesh and
     // noise estimate; without, estimated on first use.
     const Mesh& view_surface();
+    // Whether view_surface() is the mesh denoised (its flat faces smaller than the denoising
+    // scale are gone: geometry/view/default_view.h's choose_up).
+    bool view_surface_denoised();
 
     // Uploads the fields of this view to `renderer` (the whole mesh on the
     // first view; nothing when this view was the last one prepared). The

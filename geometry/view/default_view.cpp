@@ -21,6 +21,9 @@ namespace {
 constexpr int kBins = 64;
 constexpr size_t kMaxSampledFaces = 200000;
 constexpr double kDetailWeight = 1.0;
+// A denoised figure's low end carries at least this many times the surface
+// of its high end in the end slabs (choose_up, default_view.h).
+constexpr double kBlunterEnd = 1.1;
 
 // Fibonacci sphere: kBins nearly uniform directions.
 std::array<glm::vec3, kBins> bin_directions() {
@@ -105,9 +108,12 @@ glm::vec2 front_of_upright_model(const Mesh& mesh, size_t step) {
 
 // Flat area at the ends of each axis (choose_up, default_view.h): share of
 // the surface in faces within 5 degrees of perpendicular to axis k lying in
-// the slab of 2% of the extent at its low (end 0) or high (end 1) end.
+// the slab of 2% of the extent at its low (end 0) or high (end 1) end; and
+// the share of the surface in that slab whatever its faces' orientation (how
+// blunt that end is).
 struct UpEvidence {
     double flat[3][2] = {};
+    double slab[3][2] = {};
     double extent[3] = {};
 };
 
@@ -130,15 +136,16 @@ UpEvidence up_evidence(const Mesh& mesh, size_t step) {
         total += w;
         const glm::dvec3 p = (a + b + c) / 3.0;
         for (int k = 0; k < 3; ++k) {
-            if (!(std::fabs(n[k]) >= cos_flat * 2 * w) || !(size[k] > 0)) continue;
+            if (!(size[k] > 0)) continue;
             const double slab = 0.02 * size[k];
-            if (p[k] - lo[k] <= slab) e.flat[k][0] += w;
-            if (hi[k] - p[k] <= slab) e.flat[k][1] += w;
+            const bool flat = std::fabs(n[k]) >= cos_flat * 2 * w;
+            if (p[k] - lo[k] <= slab) e.slab[k][0] += w, e.flat[k][0] += flat ? w : 0.0;
+            if (hi[k] - p[k] <= slab) e.slab[k][1] += w, e.flat[k][1] += flat ? w : 0.0;
         }
     }
     if (!(total > 0)) return UpEvidence{};
-    for (auto& axis : e.flat)
-        for (double& end : axis) end /= total;
+    for (int k = 0; k < 3; ++k)
+        for (int end = 0; end < 2; ++end) e.flat[k][end] /= total, e.slab[k][end] /= total;
     return e;
 }
 
@@ -261,7 +268,7 @@ glm::vec3 view_direction(ViewAngles a, glm::vec3 up) {
     return glm::normalize(d.x * f.right + d.y * f.up + d.z * f.front);
 }
 
-glm::vec3 choose_up(const Mesh& mesh) {
+glm::vec3 choose_up(const Mesh& mesh, bool denoised) {
     const size_t step = std::max<size_t>(1, (mesh.face_count() + kMaxSampledFaces - 1) / kMaxSampledFaces);
     const UpEvidence e = up_evidence(mesh, step);
     const double largest = std::max({e.extent[0], e.extent[1], e.extent[2]});
@@ -270,7 +277,10 @@ glm::vec3 choose_up(const Mesh& mesh) {
     const bool z_up = largest > 0 && base >= (long_z ? 0.005 : 0.02) && base >= e.flat[2][1] &&
                       base >= (long_z ? 1 : 4) * std::max(e.flat[1][0], e.flat[1][1]) &&
                       base >= 2 * std::max(e.flat[0][0], e.flat[0][1]) && e.extent[2] >= 0.5 * largest;
-    return z_up ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    // A denoised scan has lost flat faces smaller than its denoising scale (a
+    // figure's soles): a standing figure stands on its blunter end.
+    const bool stands = denoised && long_z && e.slab[2][0] >= kBlunterEnd * e.slab[2][1];
+    return z_up || stands ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
 }
 
 ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up) {
@@ -285,9 +295,9 @@ ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up) {
     return choose_default_view(turned);
 }
 
-DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up) {
+DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up, bool denoised) {
     DefaultView v;
-    const glm::vec3 u = up ? *up : choose_up(mesh);
+    const glm::vec3 u = up ? *up : choose_up(mesh, denoised);
     v.up = view_frame(u).up;
     v.angles = choose_default_view(mesh, v.up);
     v.eye = view_direction(v.angles, v.up);
@@ -298,7 +308,7 @@ DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up) {
     // A noisy scan is read at its noise floor: raw face normals there miss
     // flat bases and their bending is the noise's.
     const std::optional<Mesh> denoised = denoised_if_noisy(mesh);
-    return default_view_as_read(denoised ? *denoised : mesh, up);
+    return default_view_as_read(denoised ? *denoised : mesh, up, denoised.has_value());
 }
 
 std::optional<glm::vec3> file_up_axis(const std::string& path) {
