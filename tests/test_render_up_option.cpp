@@ -1,7 +1,10 @@
 // --up and --view about it (app/render_options.h: make_camera): the default
 // view and --view AZ,EL are taken about --up; without --up, --view stays
 // about +y and the default view takes the shape's up axis.
+#include "app/mesh_drawing.h"
 #include "app/render_options.h"
+#include "geometry/mesh/primitives.h"
+#include "geometry/scale/scale_space.h"
 #include "geometry/view/default_view.h"
 #include "render/camera/camera.h"
 #include "render/image/ink_agreement.h"
@@ -132,5 +135,25 @@ TEST_CASE("A turntable of a z-up bust turns about its up axis, as kappa info rep
         CHECK(test::count_ink(frame) > 200);
         CHECK(near > 0.97);
         CHECK(back > 0.97);
+    }
+}
+
+// The drawing's default view reads the scan denoised (MeshDrawing::view_surface) and says so: a
+// noisy standing figure, whose soles are no longer flat, stands on its blunter end
+// (geometry/view/default_view.h), with the detail pipeline's denoising and without detail.
+TEST_CASE("kappa render: a noisy scan of a standing figure is drawn upright, with and without detail",
+          "[render][camera]") {
+    Mesh figure = test::figure_z_up();
+    add_normal_noise(figure, 0.33f * mean_edge_length(figure), 1);
+    for (float detail : {12.0f, 0.0f}) {
+        render::RenderSettings settings;
+        settings.detail = detail;
+        app::MeshDrawing drawing(figure, settings, SmoothingOptions{});
+        glm::vec3 axis(0);
+        const Seen s = seen(app::make_camera(app::CameraOptions{}, drawing, {300, 300}, nullptr, &axis), drawing.bounds());
+        INFO("detail " << detail << ": up " << axis.x << "," << axis.y << "," << axis.z);
+        CHECK(near(axis, {0, 0, 1}));
+        CHECK(s.up.z > 0.9f);
+        CHECK(glm::dot(s.eye, axis) > 0);
     }
 }
