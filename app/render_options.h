@@ -66,7 +66,8 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b);
 // default view or of --view turns about (app/cmd_render.cpp). Throws
 // cli::UsageError for a degenerate eye/target/up and std::runtime_error
 // for an unreadable --xf file. mesh: the surface as the default view reads it
-// (MeshDrawing::view_surface: denoised when noisy; denoised says so). mesh, bounds and the result are in drawing
+// (MeshDrawing::view_surface: denoised when noisy; denoised says so, for
+// default_view.h's choose_up). mesh, bounds and the result are in drawing
 // units (geometry/mesh/drawing_units.h: MeshDrawing::units()); --eye, --target
 // and --xf, in model units, are converted.
 render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
