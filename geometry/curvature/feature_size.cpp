@@ -1,53 +1,58 @@
 #include "feature_size.h"
 
+#include "geometry/parallel/select_value.h"
+
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <mutex>
 #include <vector>
 
 namespace kappa {
 
-namespace {
-
-float median(std::vector<float>& values) {
-    if (values.empty()) return 0.0f;
-    auto mid = values.begin() + values.size() / 2;
-    std::nth_element(values.begin(), mid, values.end());
-    return *mid;
-}
-
-}  // namespace
-
 float feature_size(const Mesh& mesh, const SurfaceFields& fields) {
     if (mesh.positions.empty()) return 0.0f;
-    // Bounding sphere: centre of the bounding box, radius to the farthest vertex.
+    // Bounding sphere: centre of the bounding box, radius to the farthest vertex
+    // (minima and maxima: the same whatever the order, so in parallel).
+    const size_t nv = mesh.positions.size();
+    std::mutex merge;
     glm::vec3 lo = mesh.positions[0], hi = lo;
-    for (const auto& p : mesh.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
+    parallel_for_ranges(nv, [&](size_t first, size_t last) {
+        glm::vec3 l(std::numeric_limits<float>::infinity()), h = -l;
+        for (size_t i = first; i < last; ++i) l = glm::min(l, mesh.positions[i]), h = glm::max(h, mesh.positions[i]);
+        std::lock_guard<std::mutex> lock(merge);
+        lo = glm::min(lo, l), hi = glm::max(hi, h);
+    }, 65536);
     const glm::vec3 centre = 0.5f * (lo + hi);
     float radius = 0;
-    for (const auto& p : mesh.positions) radius = std::max(radius, glm::length(p - centre));
+    parallel_for_ranges(nv, [&](size_t first, size_t last) {
+        float r = 0;
+        for (size_t i = first; i < last; ++i) r = std::max(r, glm::length(mesh.positions[i] - centre));
+        std::lock_guard<std::mutex> lock(merge);
+        radius = std::max(radius, r);
+    }, 65536);
 
-    std::vector<float> edges;
-    edges.reserve(mesh.faces.size());
-    for (const Face& f : mesh.faces) {  // one edge per face is a fair sample of all edges
-        const float len = glm::length(mesh.positions[f[1]] - mesh.positions[f[0]]);
-        if (len > 0) edges.push_back(len);
-    }
-    const float lower = std::min(median(edges), radius);
+    // Medians (the element at m / 2 of m, as nth_element), of edge lengths and
+    // of radii of curvature: geometry/parallel/select_value.h.
+    const auto middle = [](size_t m) { return m / 2; };
+    // One edge per face is a fair sample of all edges; zero lengths left out.
+    const float edge = select_nonnegative(mesh.faces.size(), [&](size_t f) {
+        const Face& face = mesh.faces[f];
+        const float len = glm::length(mesh.positions[face[1]] - mesh.positions[face[0]]);
+        return len > 0 ? len : -1.0f;
+    }, middle);
+    const float lower = std::min(std::isnan(edge) ? 0.0f : edge, radius);
 
-    std::vector<float> radii;
-    radii.reserve(fields.size());
-    for (size_t i = 0; i < fields.size(); ++i) {
-        if (fields.flags[i]) continue;
+    const float median_radius = select_nonnegative(fields.size(), [&](size_t i) {
+        if (fields.flags[i]) return -1.0f;  // unreliable or isolated: left out
         const float kmax = std::max(std::fabs(fields.k1[i]), std::fabs(fields.k2[i]));
-        radii.push_back(kmax > 0 ? 1.0f / kmax : radius);
-    }
-    if (radii.empty()) return radius;
-    return std::clamp(median(radii), lower, radius);
+        return kmax > 0 ? 1.0f / kmax : radius;
+    }, middle);
+    if (std::isnan(median_radius)) return radius;
+    return std::clamp(median_radius, lower, radius);
 }
 
 }  // namespace kappa

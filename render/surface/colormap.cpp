@@ -1,5 +1,7 @@
 #include "render/surface/colormap.h"
 
+#include "geometry/parallel/select_value.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -22,21 +24,25 @@ float colormap_scalar(ColorMap map, const SurfaceFields& f, size_t i) {
 
 float robust_range(ColorMap map, const SurfaceFields& fields, float percentile) {
     if (map == ColorMap::None || fields.k1.empty()) return 1;
-    std::vector<float> values;
-    values.reserve(fields.k1.size());
-    for (int pass = 0; pass < 2 && values.empty(); ++pass)
-        for (size_t i = 0; i < fields.k1.size(); ++i) {
-            const bool reliable = !fields.unreliable(i);
+    // |value| at each vertex: the reliable vertices' finite ones, else (none
+    // reliable) every finite one; -1 leaves a vertex out.
+    const auto values = [&](bool reliable_only) {
+        return [&fields, map, reliable_only](size_t i) {
+            if (reliable_only && fields.unreliable(i)) return -1.0f;
             const float v = std::abs(colormap_scalar(map, fields, i));
-            if ((reliable || pass == 1) && std::isfinite(v)) values.push_back(v);
-        }
-    if (values.empty()) return 1;
-    const size_t k = std::min(values.size() - 1, size_t(std::clamp(percentile, 0.0f, 1.0f) * float(values.size())));
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
-    const float r = values[k];
+            return std::isfinite(v) ? v : -1.0f;
+        };
+    };
+    const auto rank = [percentile](size_t m) {
+        return std::min(m - 1, size_t(std::clamp(percentile, 0.0f, 1.0f) * float(m)));
+    };
+    bool reliable_only = true;
+    float r = select_nonnegative(fields.k1.size(), values(true), rank);
+    if (std::isnan(r)) r = select_nonnegative(fields.k1.size(), values(reliable_only = false), rank);
+    if (std::isnan(r)) return 1;
     if (r > 0) return r;
     // Mostly flat: fall back to the largest value, or 1 when all are zero.
-    const float mx = *std::max_element(values.begin(), values.end());
+    const float mx = select_nonnegative(fields.k1.size(), values(reliable_only), [](size_t m) { return m - 1; });
     return mx > 0 ? mx : 1.0f;
 }
 
