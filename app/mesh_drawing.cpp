@@ -11,6 +11,7 @@
 #include "render/vector/vector_view.h"
 
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 
 namespace kappa::app {
@@ -57,11 +58,25 @@ SurfaceFields MeshDrawing::compute_fields() {
     return compute_surface_fields(drawn_.mesh, o, &times_, progress_, &adjacency_);
 }
 
+bool MeshDrawing::is_prepared(const render::Camera& camera, glm::ivec2 size) const {
+    return uploaded_ && camera.view == prepared_view_ && camera.fov_y_deg == prepared_fov_ && size == prepared_size_;
+}
+
 float MeshDrawing::prepare_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size) {
+    work_on_view(renderer, camera, size, std::numeric_limits<double>::infinity(), 0);
+    return prepared_fs_;
+}
+
+bool MeshDrawing::prepare_view_slice(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size,
+                                     double seconds) {
+    constexpr size_t kChunk = 4096;  // vertices or clusters a step: a few ms in WebAssembly
+    return work_on_view(renderer, camera, size, seconds, kChunk);
+}
+
+bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size,
+                               double seconds, size_t chunk) {
+    if (is_prepared(camera, size)) return true;
     const Mesh& mesh = drawn_.mesh;
-    if (uploaded_ && camera.view == prepared_view_ && camera.fov_y_deg == prepared_fov_ && size == prepared_size_)
-        return prepared_fs_;
-    prepared_view_ = camera.view, prepared_fov_ = camera.fov_y_deg, prepared_size_ = size;
     if (settings_.detail <= 0) {
         view_fields_ = &fields_;
         if (!uploaded_) {
@@ -69,20 +84,49 @@ float MeshDrawing::prepare_view(render::Renderer& renderer, const render::Camera
             renderer.set_creases(render::crease_end_points(drawn_));
             uploaded_ = true;
         }
-        return prepared_fs_ = fs_;
+        prepared_view_ = camera.view, prepared_fov_ = camera.fov_y_deg, prepared_size_ = size;
+        prepared_fs_ = fs_;
+        return true;
     }
-    const render::ViewScales scales = render::view_scales(mesh, detail_source_, camera, size.y, settings_.detail);
-    if (!fields_.has_curvature() && render::needs_raw_curvature(detail_source_, scales)) fields_ = compute_fields();
-    view_ = render::detail_fields(mesh, detail_source_, fields_, scales);
-    view_fields_ = &view_.fields;
+    const auto start = std::chrono::steady_clock::now();
+    const auto time_left = [&] { return seconds - seconds_since(start); };
+    PendingView* p = pending_.get();
+    if (!p || p->camera.view != camera.view || p->camera.fov_y_deg != camera.fov_y_deg || p->size != size) {
+        pending_ = std::make_unique<PendingView>();  // the view moved on: start again
+        p = pending_.get();
+        p->camera = camera, p->size = size;
+        p->scales = render::view_scales(mesh, detail_source_, camera, size.y, settings_.detail);
+    }
+    if (!p->job) {
+        if (!fields_.has_curvature() && render::needs_raw_curvature(detail_source_, p->scales)) {
+            fields_ = compute_fields();
+            if (time_left() <= 0) return false;
+        }
+        p->job = std::make_unique<render::DetailFieldsJob>(mesh, detail_source_, fields_, p->scales, chunk);
+    }
+    if (!p->job->done()) {
+        if (!p->job->run_for(time_left())) return false;
+        p->fields = p->job->take();
+        if (time_left() <= 0) return false;
+    }
     if (!uploaded_) {
-        renderer.set_mesh(view_.mesh, view_.fields, view_.feature_size, view_.fine_normals);
+        renderer.set_mesh(p->fields.mesh, p->fields.fields, p->fields.feature_size, p->fields.fine_normals);
         renderer.set_creases(render::crease_end_points(drawn_));
         uploaded_ = true;
     } else {
-        renderer.update_fields(view_.mesh, view_.fields, view_.feature_size, view_.fine_normals);
+        if (!p->upload) {
+            p->upload = render::prepare_field_upload(p->fields.mesh, p->fields.fields, p->fields.feature_size,
+                                                     p->fields.fine_normals, renderer.mesh()->face_clusters(), true);
+            if (time_left() <= 0) return false;
+        }
+        renderer.upload_fields(std::move(*p->upload));
     }
-    return prepared_fs_ = view_.feature_size;
+    view_ = std::move(p->fields);
+    view_fields_ = &view_.fields;
+    prepared_view_ = camera.view, prepared_fov_ = camera.fov_y_deg, prepared_size_ = size;
+    prepared_fs_ = view_.feature_size;
+    pending_.reset();
+    return true;
 }
 
 const Mesh& MeshDrawing::view_surface() {

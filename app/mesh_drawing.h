@@ -13,6 +13,8 @@
 #include "geometry/surface_analysis.h"
 #include "render/camera/camera.h"
 #include "render/fields/detail_fields.h"
+#include "render/fields/detail_fields_job.h"
+#include "render/fields/field_upload.h"
 #include "render/image/image.h"
 #include "render/render_settings.h"
 #include "render/renderer.h"
@@ -20,6 +22,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +63,13 @@ public:
     // renderer must draw no other mesh between views. Returns the view's
     // feature size.
     float prepare_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size);
+    // The same spread over calls, for a page that has one thread (web/): works on this view's
+    // fields for about `seconds` (at least one step of render/fields/detail_fields_job.h, cut
+    // into pieces of a few thousand vertices) and returns true once they are uploaded. A call for
+    // another view drops the work in progress and starts on that one (the scale space's levels
+    // fitted so far are kept). Until then the renderer keeps the fields it has.
+    bool prepare_view_slice(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size,
+                            double seconds);
 
     // The view as an RGBA image (prepare_view, then render_to_image).
     render::Image image(render::Renderer& renderer, const render::Camera& camera,
@@ -79,6 +89,10 @@ public:
 
 private:
     SurfaceFields compute_fields();
+    // prepare_view's work for at most about `seconds`; chunk: DetailFieldsJob's.
+    bool work_on_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size, double seconds,
+                      size_t chunk);
+    bool is_prepared(const render::Camera& camera, glm::ivec2 size) const;
 
     render::RenderSettings settings_;
     SmoothingOptions smoothing_;  // as given (model units)
@@ -104,6 +118,16 @@ private:
     glm::mat4 prepared_view_{0};
     float prepared_fov_ = 0, prepared_fs_ = 0;
     glm::ivec2 prepared_size_{0};
+    // With detail, a view's fields on their way (prepare_view_slice).
+    struct PendingView {
+        render::Camera camera;
+        glm::ivec2 size{0};
+        render::ViewScales scales;
+        std::unique_ptr<render::DetailFieldsJob> job;  // made once the raw fields it needs are there
+        render::DetailFields fields;                   // the job's, once done
+        std::optional<render::FieldUpload> upload;     // their CPU half, for a later view
+    };
+    std::unique_ptr<PendingView> pending_;
 };
 
 // make_camera (render_options.h) for a drawing: its bounds and units, and its view_surface, asked

@@ -46,28 +46,24 @@ struct Neighbourhood {
     }
 };
 
-// Every cluster's fit neighbourhood (Neighbourhood::visit within R), with
-// kernel weights, in compressed rows: gathered once, used by all three fits.
-struct NeighbourLists {
-    std::vector<uint32_t> offsets, cluster;
-    std::vector<float> weight;
-};
-
-NeighbourLists gather_neighbourhoods(const ClusterLevel& level, const std::vector<glm::vec3>& dir, float radius) {
-    const size_t n = level.size();
+// The neighbourhoods of clusters [first, last) (Neighbourhood::visit within
+// R), with kernel weights, appended to nb's compressed rows. Each thread
+// gathers a contiguous range; the ranges are appended in order, so the rows
+// depend neither on the thread count nor on how the clusters are split into calls.
+void gather_neighbourhoods(const ClusterLevel& level, const std::vector<glm::vec3>& dir, float radius, size_t first,
+                           size_t last, LevelFitter::NeighbourLists& nb) {
+    const size_t n = last - first;
     const float inv_r2 = 1.0f / (radius * radius);
-    // Each thread gathers a contiguous range of clusters; the ranges are
-    // concatenated in order, so the lists do not depend on the thread count.
     const size_t chunks = std::max<size_t>(1, std::min<size_t>(64, n / 1024));
-    std::vector<NeighbourLists> parts(chunks);
+    std::vector<LevelFitter::NeighbourLists> parts(chunks);
     parallel_for(chunks, [&](size_t c) {
-        const size_t first = n * c / chunks, last = n * (c + 1) / chunks;
-        NeighbourLists& part = parts[c];
-        part.offsets.reserve(last - first);
-        Neighbourhood nb;
-        for (size_t p = first; p < last; ++p) {
+        const size_t from = first + n * c / chunks, to = first + n * (c + 1) / chunks;
+        LevelFitter::NeighbourLists& part = parts[c];
+        part.offsets.reserve(to - from);
+        Neighbourhood visitor;
+        for (size_t p = from; p < to; ++p) {
             if (dir[p] != glm::vec3(0.0f))
-                nb.visit(level, dir, uint32_t(p), radius, [&](uint32_t q, float d2) {
+                visitor.visit(level, dir, uint32_t(p), radius, [&](uint32_t q, float d2) {
                     const float w = scale_kernel(level.area[q], d2, inv_r2);
                     if (w > 0 || q == p) {
                         part.cluster.push_back(q);
@@ -77,53 +73,77 @@ NeighbourLists gather_neighbourhoods(const ClusterLevel& level, const std::vecto
             part.offsets.push_back(uint32_t(part.cluster.size()));
         }
     }, 1);
-    NeighbourLists out;
-    out.offsets.reserve(n + 1);
-    out.offsets.push_back(0);
-    for (const NeighbourLists& part : parts) {
-        const uint32_t base = uint32_t(out.cluster.size());
-        for (uint32_t end : part.offsets) out.offsets.push_back(base + end);
-        out.cluster.insert(out.cluster.end(), part.cluster.begin(), part.cluster.end());
-        out.weight.insert(out.weight.end(), part.weight.begin(), part.weight.end());
+    if (nb.offsets.empty()) nb.offsets.push_back(0);
+    for (const LevelFitter::NeighbourLists& part : parts) {
+        const uint32_t base = uint32_t(nb.cluster.size());
+        for (uint32_t end : part.offsets) nb.offsets.push_back(base + end);
+        nb.cluster.insert(nb.cluster.end(), part.cluster.begin(), part.cluster.end());
+        nb.weight.insert(nb.weight.end(), part.weight.begin(), part.weight.end());
     }
-    return out;
+}
+
+// Calls body(p) for p in [first, last) on the threads.
+template <typename Body>
+void for_clusters(size_t first, size_t last, Body&& body) {
+    parallel_for(last - first, [&](size_t i) { body(first + i); }, 1024);
 }
 
 }  // namespace
 
-ScaleLevelFields fit_level(const ClusterLevel& level) {
+LevelFitter::LevelFitter(const ClusterLevel& level, size_t chunk) : level_(level), chunk_(chunk) {
     const size_t n = level.size();
-    ScaleLevelFields out;
-    out.value.resize(n);
-    out.valid.assign(n, 0);
-
-    std::vector<glm::vec3> dir(n);
+    out_.value.resize(n);
+    out_.valid.assign(n, 0);
+    dir_.resize(n);
     for (size_t c = 0; c < n; ++c) {
         const float len = glm::length(level.normal_sum[c]);
-        dir[c] = len > 0 && std::isfinite(len) ? level.normal_sum[c] / len : glm::vec3(0.0f);
+        dir_[c] = len > 0 && std::isfinite(len) ? level.normal_sum[c] / len : glm::vec3(0.0f);
     }
-    const NeighbourLists nb = gather_neighbourhoods(level, dir, kNeighbourhood * level.cell);
+    curvature_.resize(n);
+    nb_.offsets.reserve(n + 1);
+    if (n == 0) finish();
+}
 
-    // 1. Normals.
-    parallel_for(n, [&](size_t p) {
+void LevelFitter::step() {
+    if (done()) return;
+    const size_t n = level_.size();
+    const size_t first = next_, last = chunk_ == 0 ? n : std::min(n, first + chunk_);
+    switch (phase_) {
+        case Phase::Neighbourhoods: gather_neighbourhoods(level_, dir_, kNeighbourhood * level_.cell, first, last, nb_); break;
+        case Phase::Normals: fit_normals(first, last); break;
+        case Phase::Curvature: fit_curvature(first, last); break;
+        case Phase::Dcurv: fit_dcurv(first, last); break;
+        case Phase::Done: break;
+    }
+    next_ = last;
+    if (next_ < n) return;
+    next_ = 0;
+    if (phase_ == Phase::Dcurv) finish();
+    else phase_ = Phase(int(phase_) + 1);
+}
+
+// 1. Normals.
+void LevelFitter::fit_normals(size_t first, size_t last) {
+    for_clusters(first, last, [&](size_t p) {
         glm::vec3 sum(0.0f);
-        for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) sum += nb.weight[k] * dir[nb.cluster[k]];
+        for (uint32_t k = nb_.offsets[p]; k < nb_.offsets[p + 1]; ++k) sum += nb_.weight[k] * dir_[nb_.cluster[k]];
         const float len = glm::length(sum);
-        out.value[p].normal = len > 0 && std::isfinite(len) ? sum / len : glm::vec3(0, 0, 1);
-    }, 1024);
+        out_.value[p].normal = len > 0 && std::isfinite(len) ? sum / len : glm::vec3(0, 0, 1);
+    });
+}
 
-    // 2. Curvature: II e = dn in the tangent frame of each cluster.
-    std::vector<Tensor2> curvature(n);
-    parallel_for(n, [&](size_t p) {
-        if (dir[p] == glm::vec3(0.0f)) return;
+// 2. Curvature: II e = dn in the tangent frame of each cluster.
+void LevelFitter::fit_curvature(size_t first, size_t last) {
+    for_clusters(first, last, [&](size_t p) {
+        if (dir_[p] == glm::vec3(0.0f)) return;
         glm::vec3 u, v;
-        tangent_frame(out.value[p].normal, u, v);
+        tangent_frame(out_.value[p].normal, u, v);
         double diag[3] = {0, 0, 0}, off[2] = {0, 0}, rhs[3] = {0, 0, 0};
-        for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) {
-            const uint32_t q = nb.cluster[k];
-            const float w = nb.weight[k];
-            const glm::vec3 e = level.centroid[q] - level.centroid[p];
-            const glm::vec3 dn = out.value[q].normal - out.value[p].normal;
+        for (uint32_t k = nb_.offsets[p]; k < nb_.offsets[p + 1]; ++k) {
+            const uint32_t q = nb_.cluster[k];
+            const float w = nb_.weight[k];
+            const glm::vec3 e = level_.centroid[q] - level_.centroid[p];
+            const glm::vec3 dn = out_.value[q].normal - out_.value[p].normal;
             const float e1 = glm::dot(e, u), e2 = glm::dot(e, v);
             const float n1 = glm::dot(dn, u), n2 = glm::dot(dn, v);
             diag[0] += w * e1 * e1;
@@ -137,25 +157,27 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
         off[1] = off[0];
         double x[3];
         if (ldlt_solve_tridiagonal<3>(diag, off, rhs, x, kFitTolerance)) {
-            curvature[p] = Tensor2{float(x[0]), float(x[1]), float(x[2])};
-            out.value[p].curvature = embed(curvature[p], u, v);
-            out.valid[p] = 1;
+            curvature_[p] = Tensor2{float(x[0]), float(x[1]), float(x[2])};
+            out_.value[p].curvature = embed(curvature_[p], u, v);
+            out_.valid[p] = 1;
         }
-    }, 1024);
+    });
+}
 
-    // 3. C: C(e) = dII, the neighbours' tensors restricted to p's frame.
-    parallel_for(n, [&](size_t p) {
-        if (!out.valid[p]) return;
+// 3. C: C(e) = dII, the neighbours' tensors restricted to p's frame.
+void LevelFitter::fit_dcurv(size_t first, size_t last) {
+    for_clusters(first, last, [&](size_t p) {
+        if (!out_.valid[p]) return;
         glm::vec3 u, v;
-        tangent_frame(out.value[p].normal, u, v);
-        const Tensor2 t0 = curvature[p];
+        tangent_frame(out_.value[p].normal, u, v);
+        const Tensor2 t0 = curvature_[p];
         double diag[4] = {0, 0, 0, 0}, off[3] = {0, 0, 0}, rhs[4] = {0, 0, 0, 0};
-        for (uint32_t k = nb.offsets[p]; k < nb.offsets[p + 1]; ++k) {
-            const uint32_t q = nb.cluster[k];
-            if (!out.valid[q]) continue;
-            const float w = nb.weight[k];
-            const Tensor2 tq = restrict_to(out.value[q].curvature, u, v);
-            const glm::vec3 e = level.centroid[q] - level.centroid[p];
+        for (uint32_t k = nb_.offsets[p]; k < nb_.offsets[p + 1]; ++k) {
+            const uint32_t q = nb_.cluster[k];
+            if (!out_.valid[q]) continue;
+            const float w = nb_.weight[k];
+            const Tensor2 tq = restrict_to(out_.value[q].curvature, u, v);
+            const glm::vec3 e = level_.centroid[q] - level_.centroid[p];
             const float e1 = glm::dot(e, u), e2 = glm::dot(e, v);
             const float duu = tq.ku - t0.ku, duv = tq.kuv - t0.kuv, dvv = tq.kv - t0.kv;
             diag[0] += w * e1 * e1;
@@ -171,13 +193,24 @@ ScaleLevelFields fit_level(const ClusterLevel& level) {
         off[1] = off[2] = off[0];
         double x[4];
         if (ldlt_solve_tridiagonal<4>(diag, off, rhs, x, kFitTolerance))
-            out.value[p].dcurv = embed(glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3])), u, v);
-    }, 1024);
+            out_.value[p].dcurv = embed(glm::vec4(float(x[0]), float(x[1]), float(x[2]), float(x[3])), u, v);
+    });
+}
 
+void LevelFitter::finish() {
     // Where each cluster's value sits and how much it weighs (fields_at_scale).
-    out.place.resize(n);
-    for (size_t p = 0; p < n; ++p) out.place[p] = glm::vec4(level.centroid[p], out.valid[p] ? level.area[p] : 0.0f);
-    return out;
+    const size_t n = level_.size();
+    out_.place.resize(n);
+    for (size_t p = 0; p < n; ++p) out_.place[p] = glm::vec4(level_.centroid[p], out_.valid[p] ? level_.area[p] : 0.0f);
+    phase_ = Phase::Done;
+}
+
+ScaleLevelFields LevelFitter::take() { return std::move(out_); }
+
+ScaleLevelFields fit_level(const ClusterLevel& level) {
+    LevelFitter fitter(level);
+    while (!fitter.done()) fitter.step();
+    return fitter.take();
 }
 
 void fit_level_heights(const ClusterLevel& level, const std::vector<glm::vec3>& positions,

@@ -47,6 +47,40 @@ struct ScaleLevelFields {
 
 ScaleLevelFields fit_level(const ClusterLevel& level);
 
+// fit_level in steps, for callers that spread the work over time (a page
+// with one thread, render/fields/detail_fields_job.h): the neighbourhoods,
+// then the normals, II and C, each phase over `chunk` clusters a step
+// (0: all of them in one step, on all threads). The same fields, bit for bit.
+// `level` must outlive the fitter.
+class LevelFitter {
+public:
+    explicit LevelFitter(const ClusterLevel& level, size_t chunk = 0);
+    bool done() const { return phase_ == Phase::Done; }
+    void step();
+    ScaleLevelFields take();  // once done
+
+    // Every cluster's fit neighbourhood, with kernel weights, in compressed rows.
+    struct NeighbourLists {
+        std::vector<uint32_t> offsets, cluster;
+        std::vector<float> weight;
+    };
+
+private:
+    enum class Phase { Neighbourhoods, Normals, Curvature, Dcurv, Done };
+    void fit_normals(size_t first, size_t last);
+    void fit_curvature(size_t first, size_t last);
+    void fit_dcurv(size_t first, size_t last);
+    void finish();
+
+    const ClusterLevel& level_;
+    size_t chunk_, next_ = 0;
+    Phase phase_ = Phase::Neighbourhoods;
+    std::vector<glm::vec3> dir_;  // unit mean normal of each cluster (0: none)
+    NeighbourLists nb_;
+    std::vector<Tensor2> curvature_;  // II in each cluster's tangent frame
+    ScaleLevelFields out_;
+};
+
 // Fills fields.height: the offset that makes each cluster's quadric
 // (normal and II of the fit) pass through its vertices in the area-weighted
 // least-squares sense. The centroid of a curved patch lies inside it (by

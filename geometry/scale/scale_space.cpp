@@ -123,14 +123,20 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
     return true;
 }
 
-// Builds and fits the levels that scales in [lo, hi] blend from.
-void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, float lo, float hi) {
-    if (space.levels.empty() || !(hi > space.raw_scale)) return;
+// The levels that scales in [lo, hi] blend from and that are not fitted yet.
+std::vector<size_t> unfitted_levels(const ScaleSpace& space, float lo, float hi) {
+    std::vector<size_t> todo;
+    if (space.levels.empty() || !(hi > space.raw_scale)) return todo;
     const int first = std::max(0, int(std::floor(level_coordinate(space, lo))));
     const int last = int(std::ceil(level_coordinate(space, hi)));
-    std::vector<size_t> todo;
     for (int l = first; l <= last && l < int(space.levels.size()); ++l)
         if (!space.levels[size_t(l)].fitted()) todo.push_back(size_t(l));
+    return todo;
+}
+
+}  // namespace
+
+void fit_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, const std::vector<size_t>& todo) {
     // Clustering runs on one thread per level: build the levels side by side.
     parallel_for(todo.size(), [&](size_t k) {
         const size_t i = todo[k];
@@ -145,10 +151,10 @@ void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& ra
     }, 1);
 }
 
+namespace {
+
 void fit_levels_for(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, const std::vector<float>& sigma) {
-    if (sigma.empty()) return;
-    const auto [lo, hi] = std::minmax_element(sigma.begin(), sigma.end());
-    fit_levels_for(mesh, space, raw, *lo, *hi);
+    fit_levels(mesh, space, raw, levels_to_fit(space, sigma));
 }
 
 }  // namespace
@@ -196,20 +202,45 @@ bool uses_raw_estimate(const ScaleSpace& space, const std::vector<float>& sigma)
 }
 
 void fit_all_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw) {
-    fit_levels_for(mesh, space, raw, space.raw_scale, space.max_scale());
+    fit_levels(mesh, space, raw, unfitted_levels(space, space.raw_scale, space.max_scale()));
 }
 
-SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
-                              const std::vector<float>& sigma) {
-    fit_levels_for(mesh, space, raw, sigma);
+std::vector<size_t> levels_to_fit(const ScaleSpace& space, const std::vector<float>& sigma) {
+    if (sigma.empty()) return {};
+    const auto [lo, hi] = std::minmax_element(sigma.begin(), sigma.end());
+    return unfitted_levels(space, *lo, *hi);
+}
+
+LevelFitSteps::LevelFitSteps(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, size_t level,
+                             size_t chunk)
+    : mesh_(mesh), space_(space), raw_(raw), level_(level), chunk_(chunk) {}
+
+bool LevelFitSteps::done() const { return space_.levels[level_].fitted(); }
+
+void LevelFitSteps::step() {
+    if (done()) return;
+    ClusterLevel& clusters = space_.clusters[level_];
+    if (!clusters.built()) {
+        clusters = build_surface_clusters(mesh_, raw_.point_areas, raw_.normals, space_.origin,
+                                          space_.level_scale(level_));
+        return;
+    }
+    if (!fitter_) fitter_ = std::make_unique<LevelFitter>(clusters, chunk_);
+    if (!fitter_->done()) return fitter_->step();
+    ScaleLevelFields fields = fitter_->take();
+    fit_level_heights(clusters, mesh_.positions, raw_.point_areas, fields);
+    space_.levels[level_] = std::move(fields);  // fitted only now, heights and all
+    fitter_.reset();
+}
+
+SurfaceFields fields_to_blend(const Mesh& mesh, const SurfaceFields& raw) {
     SurfaceFields out;
     out.normals = raw.normals;
     out.point_areas = raw.point_areas;
     out.flags = raw.flags;
     out.smoothing = raw.smoothing;
     out.noise = raw.noise;
-    const bool has_raw = raw.has_curvature();
-    if (has_raw) {
+    if (raw.has_curvature()) {
         out.k1 = raw.k1, out.k2 = raw.k2, out.d1 = raw.d1, out.d2 = raw.d2, out.dcurv = raw.dcurv;
     } else {  // zero where only the raw estimate could say (flagged vertices)
         const size_t n = mesh.vertex_count();
@@ -217,7 +248,14 @@ SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const Surface
         out.d1.resize(n), out.d2.resize(n);
         for (size_t v = 0; v < n; ++v) tangent_frame(raw.normals[v], out.d1[v], out.d2[v]);
     }
-    parallel_for(mesh.vertex_count(), [&](size_t v) {
+    return out;
+}
+
+void blend_fields(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+                  const std::vector<float>& sigma, size_t first, size_t last, SurfaceFields& out) {
+    const bool has_raw = raw.has_curvature();
+    parallel_for(last - first, [&](size_t k) {
+        const size_t v = first + k;
         VertexBlend b;
         if (!blend_vertex<Blend::Tensors>(mesh, space, raw, v, sigma[v], b)) return;
         Sym3 tensor;
@@ -240,6 +278,13 @@ SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const Surface
         diagonalize_tensor(u, w, n, restrict_to(tensor, u, w), out.d1[v], out.d2[v], out.k1[v], out.k2[v]);
         out.dcurv[v] = restrict_to(dcurv, out.d1[v], out.d2[v]);
     }, 2048);
+}
+
+SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
+                              const std::vector<float>& sigma) {
+    fit_levels_for(mesh, space, raw, sigma);
+    SurfaceFields out = fields_to_blend(mesh, raw);
+    blend_fields(mesh, space, raw, sigma, 0, mesh.vertex_count(), out);
     return out;
 }
 
@@ -254,11 +299,10 @@ std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, con
     return out;
 }
 
-SurfaceAtScale surface_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
-                                const std::vector<float>& sigma) {
-    fit_levels_for(mesh, space, raw, sigma);
-    SurfaceAtScale out{mesh.positions, raw.normals};
-    parallel_for(mesh.vertex_count(), [&](size_t v) {
+void blend_surface(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+                   const std::vector<float>& sigma, size_t first, size_t last, SurfaceAtScale& out) {
+    parallel_for(last - first, [&](size_t k) {
+        const size_t v = first + k;
         VertexBlend b;
         if (!blend_vertex<Blend::Positions>(mesh, space, raw, v, sigma[v], b)) return;
         out.normals[v] = b.normal;
@@ -271,6 +315,13 @@ SurfaceAtScale surface_at_scale(const Mesh& mesh, ScaleSpace& space, const Surfa
         if (len > sigma[v]) shift *= sigma[v] / len;
         if (std::isfinite(len)) out.positions[v] += shift;
     }, 2048);
+}
+
+SurfaceAtScale surface_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
+                                const std::vector<float>& sigma) {
+    fit_levels_for(mesh, space, raw, sigma);
+    SurfaceAtScale out{mesh.positions, raw.normals};
+    blend_surface(mesh, space, raw, sigma, 0, mesh.vertex_count(), out);
     return out;
 }
 

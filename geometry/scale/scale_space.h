@@ -31,6 +31,7 @@
 #include <glm/vec4.hpp>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace kappa {
@@ -93,5 +94,41 @@ SurfaceAtScale surface_at_scale(const Mesh& mesh, ScaleSpace& space, const Surfa
 
 // The same with one sigma for every vertex.
 SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, float sigma);
+
+// --- The same work in steps, for callers that spread it over time (a page
+// with one thread: render/fields/detail_fields_job.h). The results are
+// those of the functions above, bit for bit.
+
+// The levels that fields at scales sigma blend from and that are not fitted yet.
+std::vector<size_t> levels_to_fit(const ScaleSpace& space, const std::vector<float>& sigma);
+// Fits these levels in one go, side by side on the threads.
+void fit_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, const std::vector<size_t>& levels);
+
+// Fits one level: its clusters in one step, the fit (level_fit.h's
+// LevelFitter) over `chunk` clusters a step (0: each phase in one step), then
+// the heights. The level counts as fitted only after the last step, so a
+// fit left unfinished leaves the space as good as it was.
+class LevelFitSteps {
+public:
+    LevelFitSteps(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, size_t level, size_t chunk);
+    bool done() const;
+    void step();
+
+private:
+    const Mesh& mesh_;
+    ScaleSpace& space_;
+    const SurfaceFields& raw_;
+    size_t level_, chunk_;
+    std::unique_ptr<LevelFitter> fitter_;
+};
+
+// fields_at_scale's output before the blend (raw's fields, curvature zero where raw has none);
+// blend_fields then blends vertices [first, last). The levels the blend reads must be fitted.
+SurfaceFields fields_to_blend(const Mesh& mesh, const SurfaceFields& raw);
+void blend_fields(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+                  const std::vector<float>& sigma, size_t first, size_t last, SurfaceFields& out);
+// surface_at_scale's blend of vertices [first, last) into out, which starts as {mesh.positions, raw.normals}.
+void blend_surface(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
+                   const std::vector<float>& sigma, size_t first, size_t last, SurfaceAtScale& out);
 
 }  // namespace kappa

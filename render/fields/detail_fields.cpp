@@ -1,11 +1,11 @@
 #include "render/fields/detail_fields.h"
 
-#include "geometry/curvature/feature_size.h"
+#include "render/fields/detail_fields_job.h"
+
 #include "geometry/scale/auto_smoothing.h"
 #include "geometry/scale/denoise.h"
 #include "geometry/scale/noise_level.h"
 #include "geometry/scale/pixel_scale.h"
-#include "geometry/scale/raw_consistency.h"
 #include "geometry/mesh/vertex_faces.h"
 #include "geometry/surface_analysis.h"
 
@@ -21,13 +21,6 @@ namespace {
 // error: 25 times the noise level leaves a few degrees, too little to draw
 // stray contour loops where the surface is seen edge-on.
 constexpr float kContourNoise = 25.0f;
-
-// Where the raw C is not scale-consistent (an irregular tessellation), no
-// fields finer than 2 mean edges: on the accuracy lab's torus with vertices
-// jittered by 0.3 cells the errors of k and C are 1.5% and 9.6% there,
-// near their least (1.7% and 14% at the first level, 1.5 edges; 1.9% and
-// 8.7% at 3 edges; 4.6% and 118% raw).
-constexpr float kIrregularFloorEdges = 2.0f;
 
 }  // namespace
 
@@ -71,44 +64,19 @@ ViewScales view_scales(const Mesh& mesh, const DetailSource& source, const Camer
     return v;
 }
 
-namespace {
-
 bool scales_need_raw_curvature(const DetailSource& source, const ViewScales& scales) {
     return source.raw != DetailSource::Raw::Inconsistent && uses_raw_estimate(source.space, scales.sigma);
 }
-
-}  // namespace
 
 bool needs_raw_curvature(const DetailSource& source, const ViewScales& scales) {
     return source.denoised_at == 0 && scales_need_raw_curvature(source, scales);
 }
 
-DetailFields detail_fields(const Mesh& input, DetailSource& source, const SurfaceFields& input_raw,
+DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw,
                            const ViewScales& scales) {
-    const bool denoised = source.denoised_at > 0;
-    if (denoised && !source.denoised_raw.has_curvature() && scales_need_raw_curvature(source, scales))
-        source.denoised_raw = compute_surface_fields(source.denoised);
-    const Mesh& mesh = denoised ? source.denoised : input;
-    const SurfaceFields& raw = denoised ? source.denoised_raw : input_raw;
-    if (!raw.has_curvature() && scales_need_raw_curvature(source, scales))
-        throw std::invalid_argument("detail_fields: these scales need the raw curvature");
-    std::vector<float> sigma = scales.sigma;
-    if (!source.space.empty() && uses_raw_estimate(source.space, sigma)) {
-        if (source.raw == DetailSource::Raw::Unknown)
-            source.raw = raw_dcurv_consistency(mesh, source.space, raw).consistent ? DetailSource::Raw::Consistent
-                                                                                  : DetailSource::Raw::Inconsistent;
-        const float mean_edge = 2.0f * source.space.raw_scale;  // the raw scale is half a mean edge
-        if (source.raw == DetailSource::Raw::Inconsistent)
-            for (float& s : sigma) s = std::max(s, kIrregularFloorEdges * mean_edge);
-    }
-    DetailFields out;
-    SurfaceAtScale fine = surface_at_scale(mesh, source.space, raw, scales.fine);
-    out.fine_normals = std::move(fine.normals);
-    out.mesh.positions = std::move(fine.positions);
-    out.mesh.faces = mesh.faces;
-    out.fields = fields_at_scale(mesh, source.space, raw, sigma);
-    out.feature_size = feature_size(mesh, out.fields);
-    return out;
+    DetailFieldsJob job(mesh, source, raw, scales);
+    while (!job.done()) job.step();
+    return job.take();
 }
 
 DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw, const Camera& camera,

@@ -80,7 +80,11 @@ ViewScales view_scales(const Mesh& mesh, const DetailSource& source, const Camer
 // is still to be tested), so raw must have curvature. False for a denoised
 // source: it completes its own raw fields.
 bool needs_raw_curvature(const DetailSource& source, const ViewScales& scales);
+// Whether these scales blend in the raw estimate, or must first test its
+// consistency, whatever the source (a denoised one's own raw fields then).
+bool scales_need_raw_curvature(const DetailSource& source, const ViewScales& scales);
 // Throws std::invalid_argument when raw lacks curvature that the scales need.
+// (render/fields/detail_fields_job.h: the same work in steps.)
 DetailFields detail_fields(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw,
                            const ViewScales& scales);
 
