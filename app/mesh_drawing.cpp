@@ -58,7 +58,7 @@ SurfaceFields MeshDrawing::compute_fields() {
     return compute_surface_fields(drawn_.mesh, o, &times_, progress_, &adjacency_);
 }
 
-bool MeshDrawing::is_prepared(const render::Camera& camera, glm::ivec2 size) const {
+bool MeshDrawing::view_prepared(const render::Camera& camera, glm::ivec2 size) const {
     return uploaded_ && camera.view == prepared_view_ && camera.fov_y_deg == prepared_fov_ && size == prepared_size_;
 }
 
@@ -75,7 +75,7 @@ bool MeshDrawing::prepare_view_slice(render::Renderer& renderer, const render::C
 
 bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size,
                                double seconds, size_t chunk) {
-    if (is_prepared(camera, size)) return true;
+    if (view_prepared(camera, size)) return true;
     const Mesh& mesh = drawn_.mesh;
     if (settings_.detail <= 0) {
         view_fields_ = &fields_;
@@ -114,12 +114,14 @@ bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera&
         renderer.set_creases(render::crease_end_points(drawn_));
         uploaded_ = true;
     } else {
-        if (!p->upload) {
-            p->upload = render::prepare_field_upload(p->fields.mesh, p->fields.fields, p->fields.feature_size,
-                                                     p->fields.fine_normals, renderer.mesh()->face_clusters(), true);
-            if (time_left() <= 0) return false;
+        if (!p->upload)
+            p->upload = std::make_unique<render::FieldUploadSteps>(p->fields.mesh, p->fields.fields,
+                                                                   p->fields.feature_size, p->fields.fine_normals,
+                                                                   renderer.mesh()->face_clusters(), chunk);
+        if (!p->upload->done()) {
+            if (!p->upload->run_for(time_left()) || time_left() <= 0) return false;
         }
-        renderer.upload_fields(std::move(*p->upload));
+        renderer.upload_fields(p->upload->take());
     }
     view_ = std::move(p->fields);
     view_fields_ = &view_.fields;

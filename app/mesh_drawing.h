@@ -70,6 +70,8 @@ public:
     // fitted so far are kept). Until then the renderer keeps the fields it has.
     bool prepare_view_slice(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size,
                             double seconds);
+    // Whether this view's fields are the ones uploaded.
+    bool view_prepared(const render::Camera& camera, glm::ivec2 size) const;
 
     // The view as an RGBA image (prepare_view, then render_to_image).
     render::Image image(render::Renderer& renderer, const render::Camera& camera,
@@ -92,7 +94,6 @@ private:
     // prepare_view's work for at most about `seconds`; chunk: DetailFieldsJob's.
     bool work_on_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size, double seconds,
                       size_t chunk);
-    bool is_prepared(const render::Camera& camera, glm::ivec2 size) const;
 
     render::RenderSettings settings_;
     SmoothingOptions smoothing_;  // as given (model units)
@@ -125,7 +126,7 @@ private:
         render::ViewScales scales;
         std::unique_ptr<render::DetailFieldsJob> job;  // made once the raw fields it needs are there
         render::DetailFields fields;                   // the job's, once done
-        std::optional<render::FieldUpload> upload;     // their CPU half, for a later view
+        std::unique_ptr<render::FieldUploadSteps> upload;  // their CPU half, for a later view
     };
     std::unique_ptr<PendingView> pending_;
 };

@@ -3,14 +3,16 @@
 // gives the same bits as detail_fields in one go, on the paths a view can
 // take (levels only; the raw C tested and blended in, or refused; a noisy
 // mesh drawn denoised), and a job dropped half-way leaves the source as good
-// as it found it.
+// as it found it; the upload's CPU half likewise.
 #include "analytic_curvature.h"
 
 #include "geometry/mesh/default_model.h"
 #include "geometry/mesh/primitives.h"
 #include "geometry/scale/scale_space.h"
 #include "geometry/surface_analysis.h"
+#include "geometry/culling/face_clusters.h"
 #include "render/fields/detail_fields_job.h"
+#include "render/fields/field_upload.h"
 
 #include <catch2/catch.hpp>
 
@@ -104,4 +106,33 @@ TEST_CASE("A detail fields job given no time runs one step a call", "[render][de
     while (!job.run_for(0.0)) ++calls;
     CHECK(calls > 2 * mesh.vertex_count() / 500);
     CHECK(job.done());
+}
+
+// The CPU half of an upload (render/fields/field_upload.h) in small steps: the
+// same records, colour-map ranges and cluster bounds.
+TEST_CASE("The fields' upload prepared in small steps is the same bits as in one go", "[render][detail]") {
+    const Mesh mesh = make_default_model();
+    const SurfaceFields raw = compute_surface_fields(mesh);
+    render::DetailSource source = render::make_detail_source(mesh, raw);
+    const render::DetailFields d = render::detail_fields(mesh, source, raw, slanted_scales(mesh, 3.0f, 20.0f));
+    const FaceClusters clusters = cluster_faces(mesh, 256);
+    const render::FieldUpload once =
+        render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters);
+    render::FieldUploadSteps steps(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters, 500);
+    size_t n = 0;
+    while (!steps.done()) steps.step(), ++n;
+    const render::FieldUpload stepped = steps.take();
+    CHECK(n > mesh.vertex_count() / 500);
+    CHECK(same_bits(stepped.vertices, once.vertices));
+    CHECK(std::memcmp(stepped.ranges.data(), once.ranges.data(), sizeof(once.ranges)) == 0);
+    const render::MeshClusters &a = stepped.clusters, &b = once.clusters;
+    CHECK(same_bits(a.bounds, b.bounds));
+    CHECK(same_bits(a.fine_bounds, b.fine_bounds));
+    CHECK(same_bits(a.first_face, b.first_face));
+    CHECK(same_bits(a.may_have_suggestive, b.may_have_suggestive));
+    CHECK(same_bits(a.max_strength, b.max_strength));
+    CHECK(same_bits(a.may_have_parabolic, b.may_have_parabolic));
+    CHECK(same_bits(a.may_have_mean_zero, b.may_have_mean_zero));
+    CHECK(same_bits(a.max_kmax, b.max_kmax));
+    CHECK(same_bits(a.max_highlight, b.max_highlight));
 }

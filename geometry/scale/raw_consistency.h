@@ -41,4 +41,14 @@ struct RawConsistency {
 // of `space` if they are not yet. Deterministic.
 RawConsistency raw_dcurv_consistency(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw);
 
+// The same in steps (render/fields/detail_fields_job.h spreads it over a
+// page's frames): whether the test applies (two levels, raw curvature), the
+// scales at which it samples level 0 or 1 (zero at the vertices it skips),
+// and its verdict from the fields at those scales (fields_at_scale, or
+// fields_to_blend and blend_fields in pieces).
+bool consistency_testable(const ScaleSpace& space, const SurfaceFields& raw);
+std::vector<float> consistency_scales(const Mesh& mesh, const ScaleSpace& space, size_t level);
+RawConsistency judge_consistency(const Mesh& mesh, const SurfaceFields& raw, const SurfaceFields& first,
+                                 const SurfaceFields& second);
+
 }  // namespace kappa

@@ -5,7 +5,6 @@
 #include "geometry/surface_analysis.h"
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 
 namespace kappa::render {
@@ -28,32 +27,14 @@ DetailFieldsJob::DetailFieldsJob(const Mesh& mesh, DetailSource& source, const S
     // A denoised source completes its own raw fields when the scales need its curvature.
     if (source_.denoised_at > 0 && !source_.denoised_raw.has_curvature() &&
         scales_need_raw_curvature(source_, scales_))
-        steps_.push_back([this] {
-            source_.denoised_raw = compute_surface_fields(source_.denoised);
-            return true;
-        });
-    steps_.push_back([this] {
-        plan_consistency();
-        return true;
-    });
+        steps_.add_once([this] { source_.denoised_raw = compute_surface_fields(source_.denoised); });
+    steps_.add_once([this] { plan_consistency(); });
 }
 
 const Mesh& DetailFieldsJob::mesh() const { return source_.denoised_at > 0 ? source_.denoised : input_; }
 
 const SurfaceFields& DetailFieldsJob::raw() const {
     return source_.denoised_at > 0 ? source_.denoised_raw : input_raw_;
-}
-
-void DetailFieldsJob::step() {
-    if (done()) return;
-    if (steps_.front()()) steps_.pop_front();
-}
-
-bool DetailFieldsJob::run_for(double seconds) {
-    const auto start = std::chrono::steady_clock::now();
-    do step();
-    while (!done() && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds);
-    return done();
 }
 
 DetailFields DetailFieldsJob::take() { return std::move(out_); }
@@ -75,15 +56,30 @@ void DetailFieldsJob::plan_consistency() {
         floor_sigma();
         return plan_fields();
     }
-    const float first = space.level_scale(0), second = space.level_scale(std::min<size_t>(1, space.levels.size() - 1));
-    fit(levels_to_fit(space, {first, second}));
-    steps_.push_back([this, floor_sigma] {
-        source_.raw = raw_dcurv_consistency(mesh(), source_.space, raw()).consistent
-                          ? DetailSource::Raw::Consistent
-                          : DetailSource::Raw::Inconsistent;
+    auto judged = [this, floor_sigma](RawConsistency verdict) {
+        source_.raw = verdict.consistent ? DetailSource::Raw::Consistent : DetailSource::Raw::Inconsistent;
         floor_sigma();
         plan_fields();
-        return true;
+    };
+    if (!consistency_testable(space, raw())) {
+        steps_.add_once([judged] { judged({}); });
+        return;
+    }
+    // The fields at levels 0 and 1 at the sampled vertices, blended in pieces.
+    fit(levels_to_fit(space, {space.level_scale(0), space.level_scale(1)}));
+    for (size_t level : {0, 1}) {
+        SurfaceFields* at = level == 0 ? &first_ : &second_;
+        steps_.add_once([this, at, level] {
+            sampled_ = consistency_scales(mesh(), source_.space, level);
+            *at = fields_to_blend(mesh(), raw());
+        });
+        steps_.add_chunks(mesh().vertex_count(), chunk_, [this, at](size_t first, size_t last) {
+            blend_fields(mesh(), source_.space, raw(), sampled_, first, last, *at);
+        });
+    }
+    steps_.add_once([this, judged] {
+        judged(judge_consistency(mesh(), raw(), first_, second_));
+        first_ = second_ = {};
     });
 }
 
@@ -93,61 +89,43 @@ void DetailFieldsJob::plan_fields() {
         if (std::find(levels.begin(), levels.end(), l) == levels.end()) levels.push_back(l);
     std::sort(levels.begin(), levels.end());
     fit(levels);
-    steps_.push_back([this] {
-        plan_blends();
-        return true;
-    });
+    steps_.add_once([this] { plan_blends(); });
 }
 
 void DetailFieldsJob::plan_blends() {
     // Occluding contours and shading: the surface at the fine scales.
+    const size_t n = mesh().vertex_count();
     fine_ = {mesh().positions, raw().normals};
-    for_each_chunk([this](size_t first, size_t last) {
+    steps_.add_chunks(n, chunk_, [this](size_t first, size_t last) {
         blend_surface(mesh(), source_.space, raw(), scales_.fine, first, last, fine_);
     });
     // The other lines: the fields at the detail scales.
-    steps_.push_back([this] {
+    steps_.add_once([this] {
         out_.fine_normals = std::move(fine_.normals);
         out_.mesh.positions = std::move(fine_.positions);
         out_.mesh.faces = mesh().faces;
         out_.fields = fields_to_blend(mesh(), raw());
-        return true;
     });
-    for_each_chunk([this](size_t first, size_t last) {
+    steps_.add_chunks(n, chunk_, [this](size_t first, size_t last) {
         blend_fields(mesh(), source_.space, raw(), sigma_, first, last, out_.fields);
     });
-    steps_.push_back([this] {
-        out_.feature_size = feature_size(mesh(), out_.fields);
-        return true;
-    });
+    steps_.add_once([this] { out_.feature_size = feature_size(mesh(), out_.fields); });
 }
 
 void DetailFieldsJob::fit(const std::vector<size_t>& levels) {
     if (levels.empty()) return;
     if (chunk_ == 0) {  // side by side on the threads
-        steps_.push_back([this, levels] {
-            fit_levels(mesh(), source_.space, raw(), levels);
-            return true;
-        });
+        steps_.add_once([this, levels] { fit_levels(mesh(), source_.space, raw(), levels); });
         return;
     }
     for (size_t level : levels) {
         auto fitting = std::make_shared<std::unique_ptr<LevelFitSteps>>();
-        steps_.push_back([this, level, fitting] {
+        steps_.add([this, level, fitting] {
             if (!*fitting) *fitting = std::make_unique<LevelFitSteps>(mesh(), source_.space, raw(), level, chunk_);
             (*fitting)->step();
             return (*fitting)->done();
         });
     }
-}
-
-void DetailFieldsJob::for_each_chunk(const std::function<void(size_t, size_t)>& body) {
-    const size_t n = mesh().vertex_count(), chunk = chunk_ == 0 ? std::max<size_t>(n, 1) : chunk_;
-    for (size_t first = 0; first < n; first += chunk)
-        steps_.push_back([body, first, last = std::min(n, first + chunk)] {
-            body(first, last);
-            return true;
-        });
 }
 
 }  // namespace kappa::render

@@ -14,9 +14,7 @@
 
 #include "render/fields/detail_fields.h"
 
-#include <deque>
-#include <functional>
-#include <memory>
+#include "geometry/parallel/step_queue.h"
 
 namespace kappa::render {
 
@@ -25,23 +23,21 @@ public:
     // chunk: vertices (and clusters) a step; 0: each stage in one step, on all threads.
     DetailFieldsJob(const Mesh& mesh, DetailSource& source, const SurfaceFields& raw, ViewScales scales,
                     size_t chunk = 0);
-    bool done() const { return steps_.empty(); }
+    DetailFieldsJob(const DetailFieldsJob&) = delete;  // its steps point at it
+    DetailFieldsJob& operator=(const DetailFieldsJob&) = delete;
+    bool done() const { return steps_.done(); }
     // The next step. Throws std::invalid_argument as detail_fields does.
-    void step();
+    void step() { steps_.step(); }
     // Steps until done or until `seconds` have passed (at least one step); returns done().
-    bool run_for(double seconds);
+    bool run_for(double seconds) { return steps_.run_for(seconds); }
     DetailFields take();  // once done
 
 private:
-    // A step returns whether it is finished (a level's fit takes several calls).
     // Planning steps come last in the queue and add the steps after them.
-    using Step = std::function<bool()>;
     void plan_consistency();
     void plan_fields();
     void plan_blends();
     void fit(const std::vector<size_t>& levels);
-    // Steps calling body(first, last) over the vertices, chunk_ at a time.
-    void for_each_chunk(const std::function<void(size_t, size_t)>& body);
     const Mesh& mesh() const;          // the input, or the source's denoised surface
     const SurfaceFields& raw() const;  // its raw fields
 
@@ -51,9 +47,11 @@ private:
     ViewScales scales_;
     size_t chunk_;
     std::vector<float> sigma_;  // scales_.sigma, floored where the raw C is not to be trusted
+    SurfaceFields first_, second_;  // the consistency test's fields at levels 0 and 1
+    std::vector<float> sampled_;     // the scales it samples one of them at
     SurfaceAtScale fine_;
     DetailFields out_;
-    std::deque<Step> steps_;
+    StepQueue steps_;
 };
 
 }  // namespace kappa::render

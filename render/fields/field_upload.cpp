@@ -10,8 +10,9 @@
 
 namespace kappa::render {
 
-FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
-                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters) {
+FieldUploadSteps::FieldUploadSteps(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                   const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters,
+                                   size_t chunk) {
     const size_t n = mesh.vertex_count();
     if (fields.normals.size() != n || fields.k1.size() != n || fields.k2.size() != n || fields.d1.size() != n ||
         fields.d2.size() != n || fields.dcurv.size() != n)
@@ -19,21 +20,39 @@ FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, 
     const bool own_fine = !fine_normals.empty();
     if (own_fine && fine_normals.size() != n)
         throw std::invalid_argument("MeshBuffers: fine normals do not match the mesh's vertex count");
-
-    FieldUpload u;
-    u.feature_size = feature_size;
-    parallel_for(u.ranges.size(), [&](size_t m) { u.ranges[m] = robust_range(ColorMap(m), fields); }, 1);
     if (clusters.vertex_order.size() != n)
         throw std::invalid_argument("MeshBuffers: face clusters of another mesh");
-    u.vertices.resize(n);
-    parallel_for(n, [&](size_t i) {  // in the clusters' vertex order
-        const uint32_t v = clusters.vertex_order[i];
-        u.vertices[i] = {mesh.positions[v], fields.normals[v], fields.d1[v], fields.d2[v],
-                         {fields.k1[v], fields.k2[v]}, fields.dcurv[v], fields.unreliable(v) ? 1.0f : 0.0f,
-                         own_fine ? fine_normals[v] : fields.normals[v]};
+
+    FieldUpload& u = upload_;
+    u.feature_size = feature_size;
+    steps_.add_once([&, n] {
+        parallel_for(u.ranges.size(), [&](size_t m) { u.ranges[m] = robust_range(ColorMap(m), fields); }, 1);
+        u.vertices.resize(n);
     });
-    u.clusters = make_mesh_clusters(mesh, fields, clusters, feature_size, fine_normals);
-    return u;
+    steps_.add_chunks(n, chunk, [&, own_fine](size_t first, size_t last) {
+        parallel_for(last - first, [&](size_t k) {  // in the clusters' vertex order
+            const size_t i = first + k;
+            const uint32_t v = clusters.vertex_order[i];
+            u.vertices[i] = {mesh.positions[v], fields.normals[v], fields.d1[v], fields.d2[v],
+                             {fields.k1[v], fields.k2[v]}, fields.dcurv[v], fields.unreliable(v) ? 1.0f : 0.0f,
+                             own_fine ? fine_normals[v] : fields.normals[v]};
+        });
+    });
+    steps_.add_once([&] { u.clusters = mesh_cluster_bounds(mesh, fields, clusters, fine_normals); });
+    steps_.add_once([&, feature_size] { vertex_bounds_ = vertex_bounds(fields, feature_size); });
+    // Clusters of up to 256 faces (render/fields/mesh_buffers.cpp): about as much work as chunk / 64 of them.
+    steps_.add_chunks(clusters.size(), chunk == 0 ? 0 : std::max<size_t>(1, chunk / 64),
+                      [&](size_t first, size_t last) {
+                          bound_cluster_curvature(mesh, clusters, vertex_bounds_, first, last, u.clusters);
+                      });
+    steps_.add_once([this] { vertex_bounds_ = {}; });
+}
+
+FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                 const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters) {
+    FieldUploadSteps steps(mesh, fields, feature_size, fine_normals, clusters, 0);
+    while (!steps.done()) steps.step();
+    return steps.take();
 }
 
 std::vector<glm::vec3> crease_end_points(const SplitMesh& split) {

@@ -9,6 +9,7 @@
 #include "geometry/lines/line_extraction.h"
 #include "geometry/culling/face_clusters.h"
 #include "geometry/mesh/mesh.h"
+#include "geometry/parallel/step_queue.h"
 #include "geometry/surface_fields.h"
 #include "render/lines/cluster_culling.h"
 
@@ -45,6 +46,26 @@ struct FieldUpload {
 // Throws std::invalid_argument when sizes do not match the mesh.
 FieldUpload prepare_field_upload(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                                  const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters);
+
+// The same in steps of `chunk` vertices (or as much work in clusters; 0: each part in
+// one step), for a page with one thread that prepares a view between its
+// frames (app/mesh_drawing.h): the same bits. The arguments must outlive it.
+class FieldUploadSteps {
+public:
+    FieldUploadSteps(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                     const std::vector<glm::vec3>& fine_normals, const FaceClusters& clusters, size_t chunk);
+    FieldUploadSteps(const FieldUploadSteps&) = delete;  // its steps point at it
+    FieldUploadSteps& operator=(const FieldUploadSteps&) = delete;
+    bool done() const { return steps_.done(); }
+    void step() { steps_.step(); }
+    bool run_for(double seconds) { return steps_.run_for(seconds); }
+    FieldUpload take() { return std::move(upload_); }  // once done
+
+private:
+    FieldUpload upload_;
+    std::vector<VertexBounds> vertex_bounds_;
+    StepQueue steps_;
+};
 
 // The crease pass's vertex data (MeshBuffers::set_creases): for each crease
 // of the split mesh, both end points, each with the unit normals of the

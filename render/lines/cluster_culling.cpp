@@ -10,17 +10,6 @@
 
 namespace kappa::render {
 
-namespace {
-
-// What the clusters' bounds need of one vertex, computed once a vertex
-// rather than once a face corner.
-struct VertexBounds {
-    float kmax = 0;       // max(|k1|, |k2|) fs
-    float highlight = 0;  // (kmax^2 - kmin^2) fs^2
-    double strength = 0;  // |C| fs^2 (dcurv_norm), as the shader bounds Dw kr
-    bool reliable = false, k2_positive = false, k1_negative = false, positive_k = false, positive_h = false;
-};
-
 std::vector<VertexBounds> vertex_bounds(const SurfaceFields& fields, float fs) {
     const double fs2 = double(fs) * double(fs);
     std::vector<VertexBounds> out(fields.k1.size());
@@ -38,10 +27,8 @@ std::vector<VertexBounds> vertex_bounds(const SurfaceFields& fields, float fs) {
     return out;
 }
 
-}  // namespace
-
-MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
-                                float feature_size, const std::vector<glm::vec3>& fine_normals) {
+MeshClusters mesh_cluster_bounds(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
+                                 const std::vector<glm::vec3>& fine_normals) {
     MeshClusters out;
     if (fine_normals.empty()) {
         out.bounds = compute_cluster_bounds(mesh, fields.normals, clusters);
@@ -57,9 +44,14 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
     out.may_have_mean_zero.assign(clusters.size(), 0);
     out.max_kmax.assign(clusters.size(), 0.0f);
     out.max_highlight.assign(clusters.size(), 0.0f);
-    const std::vector<VertexBounds> vb = vertex_bounds(fields, feature_size);
+    return out;
+}
+
+void bound_cluster_curvature(const Mesh& mesh, const FaceClusters& clusters, const std::vector<VertexBounds>& vb,
+                             size_t first, size_t last, MeshClusters& out) {
     // Clusters are independent: each writes only its own entries.
-    parallel_for(clusters.size(), [&](size_t c) {
+    parallel_for(last - first, [&](size_t k) {
+        const size_t c = first + k;
         double strength = 0;
         for (uint32_t i = clusters.cluster_start[c]; i < clusters.cluster_start[c + 1]; ++i) {
             const Face& f = mesh.faces[clusters.face_order[i]];
@@ -87,6 +79,12 @@ MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, c
         // Float evaluation in the shader: a margin well above its rounding.
         out.max_strength[c] = float(strength * (1 + 1e-4) + 1e-30);
     }, 64);
+}
+
+MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
+                                float feature_size, const std::vector<glm::vec3>& fine_normals) {
+    MeshClusters out = mesh_cluster_bounds(mesh, fields, clusters, fine_normals);
+    bound_cluster_curvature(mesh, clusters, vertex_bounds(fields, feature_size), 0, clusters.size(), out);
     return out;
 }
 

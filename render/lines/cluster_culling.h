@@ -56,6 +56,22 @@ struct MeshClusters {
 MeshClusters make_mesh_clusters(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
                                 float feature_size, const std::vector<glm::vec3>& fine_normals = {});
 
+// The same in pieces, for callers that spread the work over time
+// (render/fields/field_upload.h): the clusters' spheres and normal cones,
+// then the curvature bounds of clusters [first, last) from what they need
+// of each vertex.
+struct VertexBounds {
+    float kmax = 0;       // max(|k1|, |k2|) fs
+    float highlight = 0;  // (kmax^2 - kmin^2) fs^2
+    double strength = 0;  // |C| fs^2 (dcurv_norm), as the shader bounds Dw kr
+    bool reliable = false, k2_positive = false, k1_negative = false, positive_k = false, positive_h = false;
+};
+MeshClusters mesh_cluster_bounds(const Mesh& mesh, const SurfaceFields& fields, const FaceClusters& clusters,
+                                 const std::vector<glm::vec3>& fine_normals);
+std::vector<VertexBounds> vertex_bounds(const SurfaceFields& fields, float fs);
+void bound_cluster_curvature(const Mesh& mesh, const FaceClusters& clusters, const std::vector<VertexBounds>& vb,
+                             size_t first, size_t last, MeshClusters& out);
+
 struct FaceRun {
     uint32_t first, count;  // faces [first, first + count) of the uploaded order
 };

@@ -18,6 +18,12 @@ OUT and prints one line "NAME: ..." with what it saw:
     page:NAME:QUERY      the same, saving a screenshot of the whole 1100x640 page (the panel too)
     time:NAME:QUERY      seconds from navigation to "kappa: ready"
     orbit:NAME:QUERY:N   then N drag steps of orbiting; frames a second
+    zoom:NAME:QUERY:N    then N wheel clicks in, and once the view's fields are
+                         prepared (in slices) N clicks out: writes NAME.json
+                         with each preparation's slices (the page's
+                         times.preparations) and the longest main-thread tasks
+                         seen meanwhile (PerformanceObserver 'longtask', over 50
+                         ms), and NAME.png once the view is drawn back out
 
 Chromium is driven over the DevTools protocol on a pipe
 (--remote-debugging-pipe: file descriptors 3 and 4), which needs nothing
@@ -174,7 +180,7 @@ def run(browser, base, out, action):
     kind, name, rest = action.split(':', 2)
     if kind == 'error':
         query, next_mesh = rest.rsplit(':', 1)
-    elif kind == 'orbit':
+    elif kind in ('orbit', 'zoom'):
         query, steps = rest.rsplit(':', 1)
     else:
         query = rest
@@ -237,8 +243,52 @@ def run(browser, base, out, action):
         cpu = browser.cpu_seconds() - cpu_before
         print('%s: %.1f frames a second over %s drag steps (kappa_draw %.0f ms a frame; Chromium used %.0f ms '
               'of CPU a frame)' % (name, frames[0], steps, frames[1], 1000 * cpu / int(steps)))
+    elif kind == 'zoom':
+        phases = browser.evaluate(ZOOM_SCRIPT % int(steps), timeout=300)
+        with open(os.path.join(out, name + '.json'), 'w') as f:
+            json.dump(phases, f)
+        save_data_url(browser.evaluate('kappaPage.pngDataUrl()'), os.path.join(out, name + '.png'))
+        for phase in phases:
+            p = phase['preparation']
+            print('%s: zoom %s: fields prepared in %d slices, the longest %.0f ms, %.0f ms of work in %.0f ms; '
+                  'longest main-thread task %.0f ms, last draw %.0f ms' % (name, phase['zoom'], p['slices'], p['longest_ms'],
+                                                        p['work_ms'], p['wall_ms'], phase['longest_task_ms'], phase['last_draw_ms']))
     else:
         print('%s: %s (%.2f s)' % (name, title, seconds))
+
+
+# Wheel clicks at the canvas's centre, N in then N out; after each burst, waits
+# until the page has prepared the fields of the view at rest. Returns, per
+# burst, the page's record of that preparation and the longest task seen.
+ZOOM_SCRIPT = '''(async () => {
+    const c = document.getElementById('canvas'), r = c.getBoundingClientRect();
+    const frame = () => new Promise(done => requestAnimationFrame(() => setTimeout(done, 0)));
+    const sleep = ms => new Promise(done => setTimeout(done, ms));
+    let longest = 0;
+    new PerformanceObserver(list => {
+        for (const e of list.getEntries()) longest = Math.max(longest, e.duration);
+    }).observe({ entryTypes: ['longtask'] });
+    const phases = [];
+    for (const dir of ['in', 'out']) {
+        const before = kappaPage.times.preparations.length;
+        for (let i = 0; i < %d; ++i) {
+            c.dispatchEvent(new WheelEvent('wheel', { clientX: r.left + r.width / 2, clientY: r.top + r.height / 2,
+                                                      deltaY: dir === 'in' ? -100 : 100, bubbles: true,
+                                                      cancelable: true }));
+            await frame();
+        }
+        longest = 0;
+        const deadline = performance.now() + 120000;
+        while (kappaPage.times.preparations.length === before || kappaPage.preparing()) {
+            if (performance.now() > deadline) throw new Error('the fields of the view were not prepared');
+            await sleep(20);
+        }
+        await sleep(100);  // the last long tasks reported
+        phases.push({ zoom: dir, preparation: kappaPage.times.preparations[before], last_draw_ms: 1000 * kappaPage.times.draw,
+                      longest_task_ms: longest });
+    }
+    return phases;
+})()'''
 
 
 def main(argv):

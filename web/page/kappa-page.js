@@ -15,7 +15,10 @@ let fixedSize = null;       // [w, h] from size=WxH
 let meshName = 'kappa';     // for the names of downloads
 let drawPending = false;
 let readyWhenDrawn = false; // the title turns to ready after the next complete frame
-const times = {};           // seconds: open (read and prepare the mesh), draw (the last frame)
+let viewMoving = false;     // a drag or a zoom under way: frames keep the fields they have
+// Seconds: open (read and prepare the mesh), draw (the last frame); preparations: the last
+// view fields' preparations, each {slices, longest_ms, work_ms, wall_ms}.
+const times = { preparations: [] };
 
 function call(name, ...args) {
   const types = args.map(a => (typeof a === 'number' ? 'number' : 'string'));
@@ -47,7 +50,9 @@ function requestDraw() {
       const t0 = performance.now();
       call('kappa_draw');
       times.draw = (performance.now() - t0) / 1000;
-      if (readyWhenDrawn) {
+      if (!Module.ccall('kappa_view_prepared', 'number', [], [])) {
+        if (!viewMoving) prepareFields();
+      } else if (readyWhenDrawn) {
         readyWhenDrawn = false;
         document.title = 'kappa: ready';
       }
@@ -58,6 +63,51 @@ function requestDraw() {
   requestAnimationFrame(draw);
   setTimeout(draw, 50);
 }
+
+// --- the view's fields, prepared in slices ------------------------------------------
+// The fields of a view at rest (with --detail, those of its scale) take a few
+// hundred ms on a large mesh: the module works on them in slices of about
+// sliceMs, each its own task, so that input and frames go on in between. A
+// message to ourselves starts the next slice sooner than a timer would (no
+// 4 ms clamp). Frames keep the fields they have until the new ones are done.
+
+const sliceMs = 12;
+const slices = new MessageChannel();
+let preparation = null;  // the one under way: {slices, longest_ms, work_ms, started}
+
+function prepareFields() {
+  if (preparation) return;
+  preparation = { slices: 0, longest_ms: 0, work_ms: 0, started: performance.now() };
+  slices.port2.postMessage(0);
+}
+
+slices.port1.onmessage = () => {
+  const p = preparation;
+  if (!p) return;
+  if (viewMoving) {  // the view moved on: prepared again when it rests
+    preparation = null;
+    return;
+  }
+  const t0 = performance.now();
+  const status = Module.ccall('kappa_prepare', 'number', ['number'], [sliceMs]);
+  const ms = performance.now() - t0;
+  p.slices += 1;
+  p.work_ms += ms;
+  p.longest_ms = Math.max(p.longest_ms, ms);
+  if (status === 2) {
+    slices.port2.postMessage(0);
+    return;
+  }
+  preparation = null;
+  if (status === 1) {
+    fail(Module.ccall('kappa_message', 'string', [], []));
+    return;
+  }
+  times.preparations.push({ slices: p.slices, longest_ms: p.longest_ms, work_ms: p.work_ms,
+                            wall_ms: performance.now() - p.started });
+  if (times.preparations.length > 20) times.preparations.shift();
+  requestDraw();
+};
 
 // --- size and layout -----------------------------------------------------------
 
@@ -129,6 +179,7 @@ let drag = null;
 let restTimer = 0;
 
 function moving() {
+  viewMoving = true;
   Module.ccall('kappa_moving', null, ['number'], [1]);
   clearTimeout(restTimer);
 }
@@ -136,8 +187,9 @@ function moving() {
 function rest(delay) {
   clearTimeout(restTimer);
   restTimer = setTimeout(() => {
+    viewMoving = false;
     Module.ccall('kappa_moving', null, ['number'], [0]);
-    requestDraw();
+    requestDraw();  // which prepares the view's fields
   }, delay);
 }
 
@@ -311,14 +363,21 @@ function svgText() {
   return text;
 }
 
-function pngDataUrl() {
+// The view drawn with its own fields (prepared now if the slices have not finished).
+function drawComplete() {
+  if (Module.ccall('kappa_prepare', 'number', ['number'], [1e9]) === 1)
+    throw new Error(Module.ccall('kappa_message', 'string', [], []));
   call('kappa_draw');
+}
+
+function pngDataUrl() {
+  drawComplete();
   return canvas.toDataURL('image/png');
 }
 
 document.getElementById('save-png').addEventListener('click', () => {
   try {
-    call('kappa_draw');
+    drawComplete();
     canvas.toBlob(blob => download(blob, meshName + '.png'), 'image/png');
   } catch (e) {
     fail(e.message);
@@ -358,7 +417,8 @@ window.addEventListener('drop', event => {
 });
 
 // For scripts and tests (tests/web/): what the buttons do, as values.
-window.kappaPage = { openUrl, openBytes, svgText, pngDataUrl, setSetting, times };
+window.kappaPage = { openUrl, openBytes, svgText, pngDataUrl, setSetting, times,
+                     preparing: () => preparation !== null || drawPending };
 
 // --- start -------------------------------------------------------------------------
 

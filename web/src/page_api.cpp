@@ -76,6 +76,18 @@ EMSCRIPTEN_KEEPALIVE int kappa_write(const char* path) { return attempt([&] { pa
 
 EMSCRIPTEN_KEEPALIVE void kappa_moving(int moving) { page().set_moving(moving != 0); }
 
+// Works on the fields of the current view for about `ms` milliseconds (one
+// slice: the page calls it again from its next task): 0 once they are
+// uploaded, 2 while there is more to do, 1 on failure.
+EMSCRIPTEN_KEEPALIVE int kappa_prepare(double ms) {
+    bool done = false;
+    if (attempt([&] { done = page().prepare(ms / 1000.0); })) return 1;
+    return done ? 0 : 2;
+}
+
+// 1 when the fields of the current view are the ones drawn.
+EMSCRIPTEN_KEEPALIVE int kappa_view_prepared() { return page().view_prepared() ? 1 : 0; }
+
 // Mouse gestures in canvas pixels (x right, y down), as the desktop viewer's.
 EMSCRIPTEN_KEEPALIVE void kappa_orbit(float x0, float y0, float x1, float y1) {
     page().orbit().orbit({x0, y0}, {x1, y1}, glm::vec2(page().size()));

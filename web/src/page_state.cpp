@@ -34,13 +34,13 @@ void PageState::open(const std::string& path) {
     path_ = path;
     options_.camera.file_up = file_up_axis(path);  // glTF: +y
     drawing_.reset();
+    shown_ = false;  // not the last mesh's fields meanwhile
     prepare();
     reset_view();
 }
 
 void PageState::prepare() {
     drawing_.reset();
-    prepared_ = false;
     if (input_) drawing_ = std::make_unique<app::MeshDrawing>(*input_, options_.settings, options_.smoothing);
 }
 
@@ -80,12 +80,24 @@ void PageState::resize(int width, int height) {
     emscripten_set_canvas_element_size("#canvas", width, height);
 }
 
+bool PageState::prepare(double seconds) {
+    if (!drawing_) return true;
+    emscripten_webgl_make_context_current(context_);
+    const bool done = drawing_->prepare_view_slice(*renderer_, camera(), size_, seconds);
+    shown_ = shown_ || done;
+    return done;
+}
+
 void PageState::draw() {
     emscripten_webgl_make_context_current(context_);
     const int w = size_.x, h = size_.y;
-    if (drawing_ && (!moving_ || !prepared_)) {
-        drawing_->prepare_view(*renderer_, camera(), size_);
-        prepared_ = true;
+    if (!shown_) {
+        const glm::vec4 b = options_.settings.background;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, w, h);
+        glClearColor(b.r, b.g, b.b, b.a);
+        glClear(GL_COLOR_BUFFER_BIT);
+        return;
     }
     // As the desktop viewer's "fast while moving": no multisampling while the view moves (software
     // WebGL multisamples slowly); the view at rest is drawn with the settings as they are.
@@ -102,7 +114,7 @@ void PageState::write(const std::string& path) {
     if (!drawing_) throw std::runtime_error(path + ": no mesh is open");
     emscripten_webgl_make_context_current(context_);
     drawing_->write(*renderer_, camera(), options_.settings, size_, path);
-    prepared_ = true;
+    shown_ = true;
 }
 
 }  // namespace kappa::web

@@ -32,13 +32,18 @@ public:
     void set_view(std::optional<ViewAngles> angles);
     void resize(int width, int height);
     // While the view moves, frames keep the fields they have; at rest the
-    // fields of the view are prepared (with --detail they follow the zoom).
+    // fields of the view are prepared (with --detail they follow the zoom),
+    // in slices: prepare works on them for about `seconds` and returns true
+    // once they are uploaded (app/mesh_drawing.h's prepare_view_slice).
     void set_moving(bool moving) { moving_ = moving; }
+    bool prepare(double seconds);
+    bool view_prepared() const { return !drawing_ || drawing_->view_prepared(camera(), size_); }
     render::OrbitCamera& orbit() { return orbit_; }
     glm::ivec2 size() const { return size_; }
     bool has_mesh() const { return drawing_ != nullptr; }
 
-    // Draws the current view into the canvas.
+    // Draws the current view into the canvas, with the fields prepared so far
+    // (a new mesh: the background until its first fields are uploaded).
     void draw();
     // Writes the current view to `path`: .svg (the CLI's writer) or .png.
     void write(const std::string& path);
@@ -58,7 +63,8 @@ private:
     render::OrbitCamera orbit_;
     float fov_ = 30;
     glm::ivec2 size_{800, 600};
-    bool moving_ = false, prepared_ = false;
+    bool moving_ = false;
+    bool shown_ = false;  // the renderer holds fields of drawing_'s mesh
 };
 
 }  // namespace kappa::web
