@@ -6,14 +6,18 @@
 // Chromium are installed (KAPPA_WEB, CMakeLists.txt).
 #include "test_support.h"
 
+#include "geometry/io/mesh_io.h"
 #include "render/image/ink_agreement.h"
 #include "render/image/png_writer.h"
 
 #include <catch2/catch.hpp>
 
+#include <glm/common.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 using namespace kappa;
 namespace fs = std::filesystem;
@@ -39,6 +43,46 @@ std::string drive_page(const std::string& meshes, const std::string& out, const 
 }
 
 std::string cli(const std::string& args) { return std::string(KAPPA_EXE) + " " + args; }
+
+// `mesh` as dir/NAME.gltf with its positions and triangles in an external
+// buffer named by `uri`, written to dir/FILE (the uri decoded; it may lie in a folder).
+void write_gltf(const Mesh& mesh, const std::string& dir, const std::string& name, const std::string& uri,
+                const std::string& file) {
+    const size_t vertex_bytes = mesh.positions.size() * sizeof(glm::vec3), face_bytes = mesh.faces.size() * sizeof(Face);
+    std::string bytes(reinterpret_cast<const char*>(mesh.positions.data()), vertex_bytes);
+    bytes.append(reinterpret_cast<const char*>(mesh.faces.data()), face_bytes);
+    glm::vec3 lo = mesh.positions[0], hi = lo;
+    for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    std::ostringstream j;
+    j << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}], )"
+      << R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], )"
+      << R"("buffers": [{"byteLength": )" << bytes.size() << R"(, "uri": ")" << uri << R"("}], )"
+      << R"("bufferViews": [{"buffer": 0, "byteLength": )" << vertex_bytes << R"(}, {"buffer": 0, "byteOffset": )"
+      << vertex_bytes << R"(, "byteLength": )" << face_bytes << "}], "
+      << R"("accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": )"
+      << mesh.positions.size() << R"(, "min": [)" << lo.x << ", " << lo.y << ", " << lo.z << R"(], "max": [)"
+      << hi.x << ", " << hi.y << ", " << hi.z << "]}, "
+      << R"({"bufferView": 1, "componentType": 5125, "type": "SCALAR", "count": )" << 3 * mesh.faces.size()
+      << "}]}";
+    test::write_file(dir + "/" + name + ".gltf", j.str());
+    fs::create_directories(fs::path(dir + "/" + file).parent_path());
+    test::write_file(dir + "/" + file, bytes);
+}
+
+// What each picture's ink has within 2 px of the other's, both at least 0.95.
+void check_same_drawing(const std::string& page_png, const std::string& cli_png) {
+    const render::Image page = render::read_png(page_png), cli_image = render::read_png(cli_png);
+    const double page_in_cli = render::ink_within(page, cli_image, 2.0f);
+    const double cli_in_page = render::ink_within(cli_image, page, 2.0f);
+    INFO(page_png << ": ink " << render::count_ink(page) << " (page), " << render::count_ink(cli_image)
+                  << " (CLI); page within 2 px of the CLI's " << page_in_cli
+                  << ", the CLI's within 2 px of the page's " << cli_in_page);
+    CHECK(page.width == cli_image.width);
+    CHECK(page.height == cli_image.height);
+    CHECK(render::count_ink(page) > 2000);
+    CHECK(page_in_cli >= 0.95);
+    CHECK(cli_in_page >= 0.95);
+}
 
 }  // namespace
 
@@ -111,6 +155,40 @@ TEST_CASE("the page prepares a new view's fields in slices and then draws what k
     CHECK(render::count_ink(page) > 2000);
     CHECK(render::ink_within(page, cli_image, 2.0f) >= 0.95);
     CHECK(render::ink_within(cli_image, page, 2.0f) >= 0.95);
+}
+
+// glTF with external buffers (.gltf + .bin), in the three ways the page
+// opens files: ?mesh=URL fetches the buffers its URIs name (here in a
+// folder, the name percent-encoded); the file picker and drag and drop take
+// them picked or dropped together. A buffer that is missing gives the CLI's
+// line in the title and on the page, and the page then opens the next one.
+// Each drawn as kappa render draws the same .gltf.
+TEST_CASE("the page opens glTF files with external buffers from URLs and from picked and dropped files", "[web]") {
+    const std::string meshes = mesh_folder({});
+    const Mesh spot = load_mesh(test::shared_mesh("spot.obj"));
+    write_gltf(spot, meshes, "spot", "buffers/spot%20data.bin", "buffers/spot data.bin");
+    write_gltf(spot, meshes, "flat", "flat.bin", "flat.bin");
+    write_gltf(spot, meshes, "broken", "missing.bin", "missing.bin");
+    fs::remove(meshes + "/missing.bin");
+    const std::string out = test::temp_dir(), query = "\\&view=30,20\\&size=800x600\\&panel=off";
+    drive_page(meshes, out,
+               "shot:url:mesh=meshes/spot.gltf" + query + " error:bad:mesh=meshes/broken.gltf" + query + ":" +
+                   meshes + "/flat.gltf," + meshes + "/flat.bin drop:drop:view=30,20\\&size=800x600\\&panel=off:" +
+                   meshes + "/flat.gltf," + meshes + "/flat.bin");
+
+    const test::CommandResult r =
+        test::run_command("cd " + meshes + " && " + cli("render broken.gltf -q -o " + out + "/x.png"));
+    REQUIRE(r.exit_code != 0);
+    const std::string cli_line = r.output.substr(0, r.output.find('\n'));  // "kappa: broken.gltf: glTF: ..."
+    REQUIRE(cli_line.rfind("kappa: broken.gltf: ", 0) == 0);
+    const std::string seen = test::read_file(out + "/bad.txt");
+    INFO("CLI: " << cli_line << "\npage (title, message): " << seen);
+    CHECK(seen == "kappa: error: " + cli_line.substr(std::string("kappa: ").size()) + "\n" + cli_line + "\n");
+
+    REQUIRE(test::run_command(cli("render " + meshes + "/spot.gltf --view 30,20 --size 800x600 -q -o " + out +
+                                  "/cli.png"))
+                .exit_code == 0);
+    for (const char* shot : {"url", "bad", "drop"}) check_same_drawing(out + "/" + shot + ".png", out + "/cli.png");
 }
 
 // A PLY cut in the middle of its faces: the page shows the line `kappa

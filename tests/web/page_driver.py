@@ -13,8 +13,11 @@ OUT and prints one line "NAME: ..." with what it saw:
     svg:NAME:QUERY       the same, then the page's SVG download as NAME.svg
     error:NAME:QUERY:NEXT opens QUERY, which must fail: writes the title and the
                          message shown to NAME.txt; then opens the mesh file NEXT
-                         (a local path) through the page's file picker and saves
+                         (local paths, several separated by commas: a .gltf and
+                         its .bin) through the page's file picker and saves
                          NAME.png once it is drawn
+    drop:NAME:QUERY:FILES opens QUERY, then drops FILES (local paths separated by
+                         commas) on the page and saves NAME.png once drawn
     page:NAME:QUERY      the same, saving a screenshot of the whole 1100x640 page (the panel too)
     time:NAME:QUERY      seconds from navigation to "kappa: ready"
     orbit:NAME:QUERY:N   then N drag steps of orbiting; frames a second
@@ -176,9 +179,28 @@ def save_data_url(url, path):
         f.write(base64.b64decode(url.split(',', 1)[1]))
 
 
+def local_files(name, paths):
+    files = [os.path.abspath(f) for f in paths.split(',')]
+    for f in files:
+        if not os.path.isfile(f):
+            raise RuntimeError(name + ': no file ' + f)
+    return files
+
+
+# Files ([{name, data (base64)}]) dropped on the page; the title says
+# "kappa: dropping" until the page has opened them.
+DROP_SCRIPT = '''(() => {
+    document.title = 'kappa: dropping';
+    const files = %s, transfer = new DataTransfer();
+    for (const f of files)
+        transfer.items.add(new File([Uint8Array.from(atob(f.data), c => c.charCodeAt(0))], f.name));
+    window.dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
+})()'''
+
+
 def run(browser, base, out, action):
     kind, name, rest = action.split(':', 2)
-    if kind == 'error':
+    if kind in ('error', 'drop'):
         query, next_mesh = rest.rsplit(':', 1)
     elif kind in ('orbit', 'zoom'):
         query, steps = rest.rsplit(':', 1)
@@ -194,15 +216,19 @@ def run(browser, base, out, action):
         shown = browser.evaluate("document.getElementById('message').textContent")
         with open(os.path.join(out, name + '.txt'), 'w') as f:
             f.write(title + '\n' + shown + '\n')
-        if not os.path.isfile(next_mesh):
-            raise RuntimeError(name + ': no file ' + next_mesh + ' to pick')
-        # As a person picks a file: the file input's files set, its change event fired.
+        files = local_files(name, next_mesh)
+        # As a person picks files: the file input's files set, its change event fired.
         document = browser.call('DOM.getDocument', session=True)['root']['nodeId']
         picker = browser.call('DOM.querySelector', {'nodeId': document, 'selector': '#file'}, session=True)
-        browser.call('DOM.setFileInputFiles', {'files': [os.path.abspath(next_mesh)], 'nodeId': picker['nodeId']},
-                     session=True)
+        browser.call('DOM.setFileInputFiles', {'files': files, 'nodeId': picker['nodeId']}, session=True)
         error_title = title
         title = browser.wait_title(lambda t: t != error_title)
+        title = browser.wait_title(is_settled)
+    if kind == 'drop':
+        # As a person drops files: a drop event whose DataTransfer holds them.
+        dropped = [{'name': os.path.basename(f), 'data': base64.b64encode(open(f, 'rb').read()).decode()}
+                   for f in local_files(name, next_mesh)]
+        browser.evaluate(DROP_SCRIPT % json.dumps(dropped))
         title = browser.wait_title(is_settled)
     if title != 'kappa: ready':
         raise RuntimeError(name + ': ' + title)
@@ -210,7 +236,7 @@ def run(browser, base, out, action):
         shot = browser.call('Page.captureScreenshot', {'format': 'png'}, session=True)
         with open(os.path.join(out, name + '.png'), 'wb') as f:
             f.write(base64.b64decode(shot['data']))
-    if kind in ('shot', 'svg', 'error'):
+    if kind in ('shot', 'svg', 'error', 'drop'):
         save_data_url(browser.evaluate('kappaPage.pngDataUrl()'), os.path.join(out, name + '.png'))
     if kind == 'svg':
         with open(os.path.join(out, name + '.svg'), 'w') as f:

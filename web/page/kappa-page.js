@@ -133,14 +133,47 @@ function baseName(path) {
   return name.replace(/[^A-Za-z0-9._+-]/g, '_');
 }
 
-// Reads the mesh from bytes under its file name, as `kappa render NAME` would read the file.
-function openBytes(name, bytes) {
+// The buffers a .gltf names by URI (not data: URIs), where the reader looks
+// for them: relative to the .gltf's folder, URI-decoded (as tinygltf does).
+// Not JSON (or no buffers): none; the reader then says what is wrong.
+function externalBuffers(name, bytes) {
+  if (!/\.gltf$/i.test(name)) return [];
+  let json;
+  try {
+    json = JSON.parse(new TextDecoder().decode(bytes));
+  } catch (e) {
+    return [];
+  }
+  const buffers = json && Array.isArray(json.buffers) ? json.buffers : [];
+  return buffers.map(b => b && b.uri).filter(uri => typeof uri === 'string' && uri && !uri.startsWith('data:'))
+    .map(uri => {
+      let path = uri;
+      try {
+        path = decodeURIComponent(uri);
+      } catch (e) {
+        // not percent-encoded after all: as it is
+      }
+      return { uri, path };
+    });
+}
+
+// Reads the mesh from bytes under its file name, as `kappa render NAME` would
+// read the file; `beside`: the files next to it ({path, bytes}, paths relative
+// to its folder: a .gltf's external buffers).
+function openBytes(name, bytes, beside = []) {
   showMessage('reading ' + name + ' ...', false);
   document.title = 'kappa: loading';
   // Let the page show the message before the module computes (a few seconds for large meshes).
   return new Promise(resolve => setTimeout(resolve, 0)).then(() => {
-    Module.FS.writeFile('/input/' + name, bytes);
+    const written = ['/input/' + name];
+    Module.FS.writeFile(written[0], bytes);
     try {
+      for (const file of beside) {
+        const path = '/input/' + file.path;
+        Module.FS.mkdirTree(path.slice(0, path.lastIndexOf('/')));
+        Module.FS.writeFile(path, file.bytes);
+        written.push(path);
+      }
       const t0 = performance.now();
       call('kappa_open', name);
       times.open = (performance.now() - t0) / 1000;
@@ -152,7 +185,13 @@ function openBytes(name, bytes) {
     } catch (e) {
       fail(e.message);
     } finally {
-      Module.FS.unlink('/input/' + name);
+      for (const path of written) {
+        try {
+          Module.FS.unlink(path);
+        } catch (e) {
+          // written twice (a buffer named like the mesh): gone already
+        }
+      }
     }
   });
 }
@@ -160,17 +199,40 @@ function openBytes(name, bytes) {
 function openUrl(url) {
   const name = baseName(url);
   document.title = 'kappa: loading';
-  return fetch(url)
-    .then(r => {
-      if (!r.ok) throw new Error(name + ': cannot read (HTTP ' + r.status + ')');
-      return r.arrayBuffer();
-    })
-    .then(buffer => openBytes(name, new Uint8Array(buffer)))
+  const fetchBytes = (from, what) => fetch(from).then(r => {
+    if (!r.ok) throw new Error(what + ': cannot read (HTTP ' + r.status + ')');
+    return r.arrayBuffer();
+  }).then(buffer => new Uint8Array(buffer));
+  // A .gltf's external buffers come from next to it; one that cannot be
+  // fetched is left out, and the reader says so as the command line does.
+  const meshUrl = new URL(url, window.location.href);
+  return fetchBytes(url, name)
+    .then(bytes => Promise.all(externalBuffers(name, bytes).map(b =>
+      fetchBytes(new URL(b.uri, meshUrl), b.path).then(data => ({ path: b.path, bytes: data }), () => null)))
+      .then(beside => openBytes(name, bytes, beside.filter(Boolean))))
     .catch(e => fail(e.message.startsWith(name) ? e.message : name + ': cannot read (' + e.message + ')'));
 }
 
-function openFile(file) {
-  return file.arrayBuffer().then(buffer => openBytes(baseName(file.name), new Uint8Array(buffer)));
+const meshFormats = /\.(ply|obj|off|stl|gltf|glb)$/i;
+
+// Files picked or dropped together: the first in a mesh format is opened,
+// the others are the files beside it that it names (a .gltf's buffers, found
+// by their file names).
+function openFiles(list) {
+  const files = Array.from(list);
+  if (!files.length) return Promise.resolve();
+  const mesh = files.find(f => meshFormats.test(f.name)) || files[0];
+  return Promise.all(files.map(f => f.arrayBuffer().then(b => ({ name: f.name, bytes: new Uint8Array(b) }))))
+    .then(read => {
+      const main = read[files.indexOf(mesh)];
+      const beside = [];
+      for (const b of externalBuffers(main.name, main.bytes)) {
+        const file = read.find(r => r !== main && r.name === b.path.split('/').pop());
+        if (file) beside.push({ path: b.path, bytes: file.bytes });
+      }
+      return openBytes(baseName(main.name), main.bytes, beside);
+    })
+    .catch(e => fail(baseName(mesh.name) + ': cannot read (' + e.message + ')'));
 }
 
 // --- navigation ----------------------------------------------------------------
@@ -398,9 +460,7 @@ document.getElementById('reset').addEventListener('click', () => {
     fail(e.message);
   }
 });
-document.getElementById('file').addEventListener('change', event => {
-  if (event.target.files.length) openFile(event.target.files[0]);
-});
+document.getElementById('file').addEventListener('change', event => openFiles(event.target.files));
 for (const type of ['dragenter', 'dragover']) {
   window.addEventListener(type, event => {
     event.preventDefault();
@@ -413,11 +473,11 @@ window.addEventListener('dragleave', event => {
 window.addEventListener('drop', event => {
   event.preventDefault();
   document.body.classList.remove('dragging');
-  if (event.dataTransfer.files.length) openFile(event.dataTransfer.files[0]);
+  openFiles(event.dataTransfer.files);
 });
 
 // For scripts and tests (tests/web/): what the buttons do, as values.
-window.kappaPage = { openUrl, openBytes, svgText, pngDataUrl, setSetting, times,
+window.kappaPage = { openUrl, openBytes, openFiles, svgText, pngDataUrl, setSetting, times,
                      preparing: () => preparation !== null || drawPending };
 
 // --- start -------------------------------------------------------------------------
