@@ -223,6 +223,29 @@ TEST_CASE("kappa render --colorbar writes the values of the bar's ends and of ze
     }
 }
 
+// The bar of a signed map has a one-pixel tick at zero, whatever the size:
+// at 1024x768 the middle of the bar falls between two pixel rows, where the
+// tick was left out before (the row's centre was half a pixel off, give or
+// take the rasteriser's rounding).
+TEST_CASE("kappa render --colorbar marks zero on the bar with one row at any size", "[render][cli]") {
+    const std::string dir = test::temp_dir();
+    for (const glm::ivec2 size : {glm::ivec2(1024, 768), glm::ivec2(600, 300), glm::ivec2(640, 481)}) {
+        const std::string png = dir + "/bar.png";
+        REQUIRE(test::run_command(kappa_render("--colorbar -q --shading none --lines none --colormap mean --size " +
+                                               std::to_string(size.x) + "x" + std::to_string(size.y) + " -o " + png))
+                    .exit_code == 0);
+        const render::Image bar = render::read_png(png);
+        // The bar: 3.5% of the width wide, 3% of the smaller side from the right edge (ColorBar::draw).
+        const int x = size.x - int(0.03f * float(std::min(size.x, size.y)) + 0.0175f * float(size.x));
+        std::vector<int> dark;
+        for (int y = size.y / 2 - 20; y <= size.y / 2 + 20; ++y)
+            if (test::is_ink(bar.at(x, y))) dark.push_back(y);
+        INFO(size.x << "x" << size.y << ": dark rows at x = " << x << " near the middle: " << dark.size());
+        REQUIRE(dark.size() == 1);
+        CHECK(std::abs(dark[0] - size.y / 2) <= 1);
+    }
+}
+
 namespace {
 
 // The unit cube as an OBJ file (two triangles a face).

@@ -117,6 +117,41 @@ TEST_CASE("the page draws what kappa render draws for the same view", "[web]") {
     }
 }
 
+// The colour bar of a curvature map, as kappa render draws it: its labels
+// (the command line's font, baked into the page: render/compose/font_atlas.h)
+// and its zero tick. Any appearance setting is a URL parameter. Compared
+// pixel for pixel left of the bar, where the labels are, and on the bar's
+// middle column (frame, tick, colours within a few levels: SwiftShader and
+// llvmpipe round the gradient differently).
+TEST_CASE("the page draws a colour map's bar with kappa render's labels", "[web]") {
+    const std::string out = test::temp_dir();
+    drive_page(mesh_folder({"spot.obj"}), out,
+               "shot:bar:mesh=meshes/spot.obj\\&view=30,20\\&size=800x600\\&panel=off\\&colormap=mean"
+               "\\&colorbar=on");
+    REQUIRE(test::run_command(cli("render " + test::shared_mesh("spot.obj") +
+                                  " --view 30,20 --size 800x600 --colormap mean --colorbar -q -o " + out + "/cli.png"))
+                .exit_code == 0);
+    const render::Image page = render::read_png(out + "/bar.png"), ours = render::read_png(out + "/cli.png");
+    REQUIRE(page.width == ours.width);
+    REQUIRE(page.height == ours.height);
+    // The bar: 28 px wide from x = 754, rows 150 to 449 (ColorBar::draw at 800x600); labels left of it.
+    auto dark = [](render::Rgba c) { return c.r + c.g + c.b < 3 * 128; };
+    size_t label_ink = 0, differing = 0, column_off = 0;
+    for (int y = 130; y < 470; ++y) {
+        for (int x = 690; x < 752; ++x) {
+            label_ink += dark(ours.at(x, y));
+            differing += dark(page.at(x, y)) != dark(ours.at(x, y));
+        }
+        const render::Rgba a = page.at(768, y), b = ours.at(768, y);
+        column_off += std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}) > 8;
+    }
+    INFO("label pixels " << label_ink << " (CLI), " << differing << " differ; " << column_off
+                         << " pixels of the bar's middle column differ by more than 8 levels");
+    CHECK(label_ink > 60);  // three numbers
+    CHECK(differing == 0);
+    CHECK(column_off == 0);
+}
+
 // With --detail the fields follow the view's scale: when the view rests
 // after a zoom, the page prepares them again, in slices of about 12 ms of
 // work each with the page free in between (web/page/kappa-page.js), not in

@@ -1,6 +1,6 @@
 #include "render/compose/text_labels.h"
 
-#include <imgui.h>
+#include "render/compose/font_atlas.h"
 
 #include <cmath>
 #include <vector>
@@ -8,21 +8,17 @@
 namespace kappa::render {
 
 struct TextLabels::Fonts {
-    ImFontAtlas atlas;
-    ImFont* font = nullptr;
+    FontAtlas atlas = default_font_atlas();
 };
 
 TextLabels::TextLabels()
     : program_({{GL_VERTEX_SHADER, {"overlay/text_vert.glsl"}}, {GL_FRAGMENT_SHADER, {"overlay/text_frag.glsl"}}}),
       fonts_(new Fonts) {
-    fonts_->font = fonts_->atlas.AddFontDefault();
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    fonts_->atlas.GetTexDataAsAlpha8(&pixels, &w, &h);
+    const FontAtlas& atlas = fonts_->atlas;
     glGenTextures(1, &texture_);
     glBindTexture(GL_TEXTURE_2D, texture_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, pixels);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas.width, atlas.height, 0, GL_RED, GL_UNSIGNED_BYTE, atlas.alpha.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // a pixel font: whole pixels
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -48,8 +44,7 @@ TextLabels::~TextLabels() {
 
 float TextLabels::width(const std::string& text, float scale) const {
     float w = 0;
-    for (char c : text)
-        if (const ImFontGlyph* g = fonts_->font->FindGlyph(ImWchar(static_cast<unsigned char>(c)))) w += g->AdvanceX;
+    for (char c : text) w += fonts_->atlas.glyphs[static_cast<unsigned char>(c)].advance;
     return w * scale;
 }
 
@@ -60,14 +55,13 @@ void TextLabels::draw(const std::string& text, glm::vec2 at, float scale, glm::v
     float x = std::round(at.x);
     const float top = std::round(at.y + 0.5f * kHeight * scale);
     for (char c : text) {
-        const ImFontGlyph* g = fonts_->font->FindGlyph(ImWchar(static_cast<unsigned char>(c)));
-        if (!g) continue;
-        const float x0 = x + g->X0 * scale, x1 = x + g->X1 * scale;
-        const float y0 = top - g->Y0 * scale, y1 = top - g->Y1 * scale;
-        const float quad[6][4] = {{x0, y0, g->U0, g->V0}, {x1, y0, g->U1, g->V0}, {x1, y1, g->U1, g->V1},
-                                  {x0, y0, g->U0, g->V0}, {x1, y1, g->U1, g->V1}, {x0, y1, g->U0, g->V1}};
+        const FontGlyph& g = fonts_->atlas.glyphs[static_cast<unsigned char>(c)];
+        const float x0 = x + g.x0 * scale, x1 = x + g.x1 * scale;
+        const float y0 = top - g.y0 * scale, y1 = top - g.y1 * scale;
+        const float quad[6][4] = {{x0, y0, g.u0, g.v0}, {x1, y0, g.u1, g.v0}, {x1, y1, g.u1, g.v1},
+                                  {x0, y0, g.u0, g.v0}, {x1, y1, g.u1, g.v1}, {x0, y1, g.u0, g.v1}};
         for (const auto& corner : quad) v.insert(v.end(), corner, corner + 4);
-        x += g->AdvanceX * scale;
+        x += g.advance * scale;
     }
     if (v.empty()) return;
     glDisable(GL_DEPTH_TEST);

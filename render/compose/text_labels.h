@@ -1,8 +1,8 @@
 // Short text (numbers, axis names) drawn into the current framebuffer, for
 // the colour bar's labels. The glyphs come from Dear ImGui's built-in font
-// (ProggyClean, 13 px), which the viewer already ships: its font atlas is
-// built once into a one-channel texture, and each character is a textured
-// quad. Works headless (no ImGui context or window needed).
+// (ProggyClean, 13 px, font_atlas.h), which the viewer already ships: its
+// font atlas is put once into a one-channel texture, and each character is a
+// textured quad. Works headless (no ImGui context or window needed).
 #pragma once
 
 #include "render/gl/shader_program.h"

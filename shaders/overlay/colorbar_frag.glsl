@@ -23,7 +23,11 @@ void main() {
         c = colormap_color(6, vec2(v_uv.y * u_map_range, 0.0), u_map_range);
     } else {
         c = colormap_color(u_colormap, vec2((v_uv.y * 2.0 - 1.0) * u_map_range, 0.0), u_map_range);
-        if (abs(px.y - 0.5 * u_rect.w) < 0.5) c = vec3(0.2);  // zero
+        // Zero: the pixel row at the middle, the lower one where the middle falls between two
+        // rows; from the exact pixel centres (gl_FragCoord), not the interpolated v_uv, which
+        // rasterisers round differently.
+        float d = gl_FragCoord.y - (u_rect.y + 0.5 * u_rect.w);
+        if (d >= -0.5 && d < 0.5) c = vec3(0.2);
     }
     o_color = vec4(c, 1.0);
 }

@@ -3,8 +3,8 @@
 // app/appearance_settings.h that the wasm module hands over as JSON) and the
 // PNG and SVG downloads. The drawing itself is web/src/page_api.cpp's.
 //
-// URL parameters (docs/web.md): mesh=URL view=AZ,EL size=WxH lines=LIST
-// shading=NAME panel=off. document.title says "kappa: ready" once the view
+// URL parameters (docs/web.md): mesh=URL view=AZ,EL size=WxH panel=off, and
+// any appearance setting by its command-line name (lines=LIST shading=NAME ...). document.title says "kappa: ready" once the view
 // asked for is drawn, "kappa: error: MESSAGE" when something failed.
 'use strict';
 
@@ -500,7 +500,11 @@ function start() {
   window.addEventListener('resize', layout);
   layout();
   if (params.has('view')) call('kappa_view', params.get('view'));
-  for (const name of ['lines', 'shading']) if (params.has(name)) call('kappa_set', name, params.get(name));
+  // Any appearance setting by its command-line name (lines=LIST, shading=NAME, colormap=NAME,
+  // colorbar=on, ...), checked by the settings table's own parser as `kappa render` checks it.
+  const settings = JSON.parse(Module.ccall('kappa_settings', 'string', [], [])).settings;
+  const names = new Set(['lines', ...settings.map(s => s.name)]);
+  for (const [name, value] of params) if (names.has(name)) call('kappa_set', name, value);
   refreshPanel();
   if (params.has('mesh')) return openUrl(params.get('mesh'));
   // No mesh: the built-in model, as `kappa view` without MESH.

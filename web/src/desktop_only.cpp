@@ -1,8 +1,7 @@
 // What the browser build has in place of the desktop libraries it lacks
-// (web/CMakeLists.txt): PNG files through stb_image_write instead of libpng, no
-// PDF (cairo), and no text on the colour bar (Dear ImGui's font). The page saves
-// its PNG from the canvas and its SVG through render/vector/svg_writer.cpp.
-#include "render/compose/text_labels.h"
+// (web/CMakeLists.txt): PNG files through stb_image_write instead of libpng, and
+// no PDF (cairo). The page saves its PNG from the canvas and its SVG through
+// render/vector/svg_writer.cpp.
 #include "render/image/png_writer.h"
 #include "render/vector/vector_drawing.h"
 
@@ -24,10 +23,5 @@ Image read_png(const std::string& path) {
 void write_pdf(const std::string& path, const VectorDrawing&) {
     throw std::runtime_error(path + ": PDF output is not in the browser build (use SVG)");
 }
-
-TextLabels::TextLabels() = default;
-TextLabels::~TextLabels() = default;
-float TextLabels::width(const std::string&, float) const { return 0; }
-void TextLabels::draw(const std::string&, glm::vec2, float, glm::vec3, int, int) {}
 
 }  // namespace kappa::render
