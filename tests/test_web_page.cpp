@@ -117,17 +117,31 @@ TEST_CASE("the page draws what kappa render draws for the same view", "[web]") {
     }
 }
 
-// The colour bar of a curvature map, as kappa render draws it: its labels
-// (the command line's font, baked into the page: render/compose/font_atlas.h)
-// and its zero tick. Any appearance setting is a URL parameter. Compared
-// pixel for pixel left of the bar, where the labels are, and on the bar's
-// middle column (frame, tick, colours within a few levels: SwiftShader and
-// llvmpipe round the gradient differently).
-TEST_CASE("the page draws a colour map's bar with kappa render's labels", "[web]") {
+// Settings beyond the lines, as kappa render draws them (any appearance
+// setting is a URL parameter):
+// - the colour bar of a curvature map: its labels (the command line's font,
+//   baked into the page: render/compose/font_atlas.h) and its zero tick,
+//   compared pixel for pixel left of the bar, where the labels are, and on the
+//   bar's middle column (frame, tick, colours within a few levels: SwiftShader
+//   and llvmpipe round the gradient differently);
+// - streamline hatching: the strokes where the CLI's are and as much ink (the
+//   page drew none before it had the surface's depth for its seeds, then
+//   strokes at the line width: a third more ink).
+TEST_CASE("the page draws a colour map's bar and hatching as kappa render does", "[web]") {
     const std::string out = test::temp_dir();
+    const std::string view = "\\&view=30,20\\&size=800x600\\&panel=off";
     drive_page(mesh_folder({"spot.obj"}), out,
-               "shot:bar:mesh=meshes/spot.obj\\&view=30,20\\&size=800x600\\&panel=off\\&colormap=mean"
-               "\\&colorbar=on");
+               "shot:bar:mesh=meshes/spot.obj" + view + "\\&colormap=mean\\&colorbar=on shot:hatching:mesh=meshes/spot.obj" +
+                   view + "\\&hatching=cross");
+    REQUIRE(test::run_command(cli("render " + test::shared_mesh("spot.obj") +
+                                  " --view 30,20 --size 800x600 --hatching cross -q -o " + out + "/cli-hatching.png"))
+                .exit_code == 0);
+    check_same_drawing(out + "/hatching.png", out + "/cli-hatching.png");
+    const double page_ink = double(render::count_ink(render::read_png(out + "/hatching.png")));
+    const double cli_ink = double(render::count_ink(render::read_png(out + "/cli-hatching.png")));
+    INFO("hatching ink: page " << page_ink << ", CLI " << cli_ink);
+    CHECK(std::abs(page_ink - cli_ink) <= 0.05 * cli_ink);
+
     REQUIRE(test::run_command(cli("render " + test::shared_mesh("spot.obj") +
                                   " --view 30,20 --size 800x600 --colormap mean --colorbar -q -o " + out + "/cli.png"))
                 .exit_code == 0);

@@ -53,7 +53,8 @@ HatchField HatchFieldPass::draw(const MeshBuffers& mesh, const FrameParams& fram
             field.tone[i] = p.a == 0 ? glm::vec2(0) : glm::vec2(float(p.a - 1) / 254.0f, 1.0f);
         }
     }, 16);
-    field.depth = fb_.read_depth();
+    // OpenGL ES (the browser) cannot read depth back: the same faces' depth drawn on the CPU.
+    field.depth = kGles ? depth_raster_.draw(mesh, frame, back_face_culling_) : fb_.read_depth();
     field.p22 = frame.projection[2][2], field.p32 = frame.projection[3][2];
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return field;

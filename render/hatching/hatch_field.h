@@ -10,6 +10,7 @@
 #include "render/fields/mesh_buffers.h"
 #include "render/render_settings.h"
 #include "render/gl/shader_program.h"
+#include "render/surface/depth_raster.h"
 
 #include <glm/vec4.hpp>
 
@@ -35,6 +36,7 @@ public:
 private:
     ShaderProgram program_;
     Framebuffer fb_;
+    DepthRaster depth_raster_;  // OpenGL ES: the depth, which it cannot read back, drawn on the CPU
     bool back_face_culling_ = true;
 };
 

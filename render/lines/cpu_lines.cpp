@@ -27,7 +27,8 @@ struct QuadVertex {
     glm::vec3 end0, end1;  // window coordinates
     glm::vec2 alpha;
     float tolerance;
-    float exterior_corner;  // 4 exterior_only + corner
+    float exterior_corner;  // 8 on_surface + 4 exterior_only + corner
+    float width;            // pixels; 0: the line width
 };
 
 // What segment_quads_vert.glsl needs of a segment: its window coordinates
@@ -127,8 +128,9 @@ CpuLinePass::CpuLinePass()
         GLint components;
         size_t offset;
     } attributes[] = {{3, offsetof(QuadVertex, end0)}, {3, offsetof(QuadVertex, end1)}, {2, offsetof(QuadVertex, alpha)},
-                      {1, offsetof(QuadVertex, tolerance)}, {1, offsetof(QuadVertex, exterior_corner)}};
-    for (GLuint i = 0; i < 5; ++i) {
+                      {1, offsetof(QuadVertex, tolerance)}, {1, offsetof(QuadVertex, exterior_corner)},
+                      {1, offsetof(QuadVertex, width)}};
+    for (GLuint i = 0; i < 6; ++i) {
         glEnableVertexAttribArray(i);
         glVertexAttribPointer(i, attributes[i].components, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<const void*>(attributes[i].offset));
@@ -352,7 +354,8 @@ InkArea CpuLinePass::draw(const CpuLines& lines, const std::vector<WindowSegment
     corners.reserve(4 * quads);
     auto add_corners = [&](const WindowSegment& seg) {
         for (int corner = 0; corner < 4; ++corner)
-            corners.push_back({seg.a, seg.b, seg.alpha, seg.tolerance, float(4 * int(seg.exterior_only) + corner)});
+            corners.push_back({seg.a, seg.b, seg.alpha, seg.tolerance,
+                               float(8 * int(seg.on_surface) + 4 * int(seg.exterior_only) + corner), seg.width});
     };
     for (const auto& b : lines.blocks)
         for (const WindowSegment& seg : b) add_corners(seg);

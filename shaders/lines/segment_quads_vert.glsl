@@ -9,13 +9,13 @@ layout(location = 0) in vec3 a_end0;      // window coordinates: pixels, depth
 layout(location = 1) in vec3 a_end1;
 layout(location = 2) in vec2 a_alpha;     // opacity at the two ends
 layout(location = 3) in float a_tolerance;  // model units, the detail scale's included
+layout(location = 5) in float a_width;     // pixels (the CPU's segments: 0 for u_line_width)
 #ifdef KAPPA_INSTANCED
 // The compute path's segments (segment_append.glsl): one instance a segment,
 // its corner from the vertex index of a four-vertex triangle strip.
 layout(location = 4) in float a_exterior;  // 1: exterior_only
-layout(location = 5) in float a_width;     // pixels
 #else
-layout(location = 4) in float a_exterior_corner;  // 4 exterior_only + corner, corner 0..3:
+layout(location = 4) in float a_exterior_corner;  // 8 on_surface + 4 exterior_only + corner, corner 0..3:
                                                   // (end, side) = (0,-), (0,+), (1,-), (1,+)
 #endif
 
@@ -37,15 +37,16 @@ void main() {
     int corner = gl_VertexID;
     float width = a_width;
     v_out.exterior_only = a_exterior;
+    v_out.on_surface = 0.0;
 #else
     int code = int(a_exterior_corner + 0.5);
     int corner = code - 4 * (code / 4);
-    float width = u_line_width;
-    v_out.exterior_only = code >= 4 ? 1.0 : 0.0;
+    float width = a_width > 0.0 ? a_width : u_line_width;  // hatching strokes have their own
+    v_out.exterior_only = code - 8 * (code / 8) >= 4 ? 1.0 : 0.0;
+    v_out.on_surface = code >= 8 ? 1.0 : 0.0;
 #endif
     v_out.alpha = a_alpha;
     v_out.width = width;
-    v_out.on_surface = 0.0;
     v_out.tolerance = a_tolerance;
     vec3 p0 = a_end0, p1 = a_end1;
     vec2 dir = p1.xy - p0.xy;
