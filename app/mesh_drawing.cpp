@@ -109,18 +109,24 @@ bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera&
         p->fields = p->job->take();
         if (time_left() <= 0) return false;
     }
+    // The upload's CPU half in steps too; the first view's also orders the triangles (face clusters).
+    if (!p->upload) {
+        if (!uploaded_) {
+            p->clusters = render::MeshBuffers::face_clusters_of(p->fields.mesh);
+            if (time_left() <= 0) return false;
+        }
+        p->upload = std::make_unique<render::FieldUploadSteps>(
+            p->fields.mesh, p->fields.fields, p->fields.feature_size, p->fields.fine_normals,
+            uploaded_ ? renderer.mesh()->face_clusters() : p->clusters, chunk);
+    }
+    if (!p->upload->done()) {
+        if (!p->upload->run_for(time_left()) || time_left() <= 0) return false;
+    }
     if (!uploaded_) {
-        renderer.set_mesh(p->fields.mesh, p->fields.fields, p->fields.feature_size, p->fields.fine_normals);
+        renderer.set_mesh(p->fields.mesh, p->fields.fields.flags, std::move(p->clusters), p->upload->take());
         renderer.set_creases(render::crease_end_points(drawn_));
         uploaded_ = true;
     } else {
-        if (!p->upload)
-            p->upload = std::make_unique<render::FieldUploadSteps>(p->fields.mesh, p->fields.fields,
-                                                                   p->fields.feature_size, p->fields.fine_normals,
-                                                                   renderer.mesh()->face_clusters(), chunk);
-        if (!p->upload->done()) {
-            if (!p->upload->run_for(time_left()) || time_left() <= 0) return false;
-        }
         renderer.upload_fields(p->upload->take());
     }
     view_ = std::move(p->fields);

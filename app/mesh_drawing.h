@@ -126,7 +126,8 @@ private:
         render::ViewScales scales;
         std::unique_ptr<render::DetailFieldsJob> job;  // made once the raw fields it needs are there
         render::DetailFields fields;                   // the job's, once done
-        std::unique_ptr<render::FieldUploadSteps> upload;  // their CPU half, for a later view
+        FaceClusters clusters;                             // the first view's: the triangles' order
+        std::unique_ptr<render::FieldUploadSteps> upload;  // their CPU half
     };
     std::unique_ptr<PendingView> pending_;
 };

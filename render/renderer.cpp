@@ -57,6 +57,12 @@ void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float fea
     mesh_ = std::make_unique<MeshBuffers>(mesh, fields, feature_size, fine_normals);
 }
 
+void Renderer::set_mesh(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters,
+                        FieldUpload&& prepared) {
+    mesh_.reset();
+    mesh_ = std::make_unique<MeshBuffers>(mesh, flags, std::move(clusters), std::move(prepared));
+}
+
 void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                              const std::vector<glm::vec3>& fine_normals) {
     if (mesh_) mesh_->update_fields(mesh, fields, feature_size, fine_normals);

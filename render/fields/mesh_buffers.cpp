@@ -43,9 +43,23 @@ void set_vertex_attributes() {
 
 }  // namespace
 
+FaceClusters MeshBuffers::face_clusters_of(const Mesh& mesh) { return cluster_faces(mesh, kClusterFaces); }
+
 MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                          const std::vector<glm::vec3>& fine_normals)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
+    build(mesh, fields.flags, face_clusters_of(mesh));
+    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
+}
+
+MeshBuffers::MeshBuffers(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters,
+                         FieldUpload&& prepared)
+    : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
+    build(mesh, flags, std::move(clusters));
+    upload(std::move(prepared));
+}
+
+void MeshBuffers::build(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters) {
     bounds_ = bounding_sphere(mesh);
     back_faces_ = back_face_visibility(mesh);
 
@@ -59,7 +73,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     // and vertices in order of first use by those triangles, so a run's
     // vertices lie close together (for the GL's vertex fetch and the CPU
     // line pass alike).
-    face_clusters_ = cluster_faces(mesh, kClusterFaces);
+    face_clusters_ = std::move(clusters);
     std::vector<uint32_t> new_id(vertex_count_);
     for (uint32_t i = 0; i < vertex_count_; ++i) new_id[face_clusters_.vertex_order[i]] = i;
     std::vector<Face> ordered(mesh.faces.size());
@@ -81,7 +95,7 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
 
     // Boundary edges share the vertex buffer through a second VAO.
-    std::vector<glm::uvec2> edges = boundary_edges(mesh, fields.flags);
+    std::vector<glm::uvec2> edges = boundary_edges(mesh, flags);
     for (glm::uvec2& e : edges) e = {new_id[e.x], new_id[e.y]};
     boundary_edges_ = edges.size();
     glGenVertexArrays(1, &edge_vao_);
@@ -94,8 +108,6 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float fe
     cpu_boundary_edges_ = std::move(edges);
 
     glBindVertexArray(0);
-    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
-    seeds_stale_ = true;
 }
 
 void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
@@ -103,7 +115,6 @@ void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, f
     if (mesh.vertex_count() != vertex_count_ || mesh.face_count() != face_count_)
         throw std::invalid_argument("MeshBuffers: new fields for a different mesh");
     upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
-    seeds_stale_ = true;
 }
 
 // The CPU copy of what the shaders read (for CPU line extraction and strokes).
@@ -126,6 +137,7 @@ void MeshBuffers::upload(FieldUpload&& u) {
     if (u.vertices.size() != vertex_count_) throw std::invalid_argument("MeshBuffers: upload for a different mesh");
     feature_size_ = u.feature_size;
     ranges_ = u.ranges;
+    seeds_stale_ = true;  // drawn again from the new surface when hatching asks (hatch_seeds)
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
     keep_cpu_copy(u.vertices);

@@ -24,7 +24,14 @@ public:
     // vertex. feature_size: the mesh's feature size fs (geometry/curvature/feature_size.h).
     MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                 const std::vector<glm::vec3>& fine_normals = {});
+    // The same from what the first constructor computes, made beforehand (a page
+    // with one thread prepares it in steps, app/mesh_drawing.h): the mesh's
+    // face_clusters_of and the fields' upload prepared with them. flags: the
+    // fields' (open boundaries).
+    MeshBuffers(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters, FieldUpload&& prepared);
     ~MeshBuffers();
+    // The face clusters the triangles are uploaded in.
+    static FaceClusters face_clusters_of(const Mesh& mesh);
     // Replaces the fields (same mesh): vertex attributes, culling bounds,
     // colour-map ranges and hatching seeds. For fields at a new scale.
     // fine_normals: normals at pixel scale, for occluding contours (zeros
@@ -99,6 +106,8 @@ public:
     float map_range(ColorMap map) const { return ranges_[size_t(map)]; }
 
 private:
+    // Everything but the fields: bounds, triangles in cluster order, boundary edges, the buffers.
+    void build(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
     void keep_cpu_copy(const std::vector<GpuVertex>& vertices);
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
     GLuint position_vao_ = 0, position_buffer_ = 0;  // the positions alone, with triangle_buffer_
