@@ -1,7 +1,6 @@
 #include "render/fields/field_upload.h"
 
 #include "geometry/parallel/parallel.h"
-#include "render/surface/colormap.h"
 #include "render/fields/mesh_buffers.h"
 
 #include <glm/geometric.hpp>
@@ -25,10 +24,7 @@ FieldUploadSteps::FieldUploadSteps(const Mesh& mesh, const SurfaceFields& fields
 
     FieldUpload& u = upload_;
     u.feature_size = feature_size;
-    steps_.add_once([&, n] {
-        parallel_for(u.ranges.size(), [&](size_t m) { u.ranges[m] = robust_range(ColorMap(m), fields); }, 1);
-        u.vertices.resize(n);
-    });
+    steps_.add_once([&, n] { u.vertices.resize(n); });
     steps_.add_chunks(n, chunk, [&, own_fine](size_t first, size_t last) {
         parallel_for(last - first, [&](size_t k) {  // in the clusters' vertex order
             const size_t i = first + k;

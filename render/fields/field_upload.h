@@ -1,6 +1,7 @@
 // The CPU half of putting curvature fields on the GPU: the interleaved
-// vertex records, the culling bounds of the contour pass and colour-map
-// ranges. No OpenGL: it can be built on a worker
+// vertex records and the culling bounds of the contour pass (colour-map
+// ranges and hatching seeds come later, when a drawing asks for them:
+// MeshBuffers). No OpenGL: it can be built on a worker
 // thread (the viewer prepares fields at a new scale there) and handed to
 // MeshBuffers::upload on the GL thread.
 #pragma once
@@ -17,7 +18,6 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include <array>
 #include <vector>
 
 namespace kappa::render {
@@ -36,7 +36,6 @@ static_assert(sizeof(GpuVertex) == 22 * sizeof(float), "GpuVertex must stay 22 p
 struct FieldUpload {
     std::vector<GpuVertex> vertices;  // in FaceClusters::vertex_order
     MeshClusters clusters;
-    std::array<float, 7> ranges{};  // robust colour-map range per ColorMap
     float feature_size = 1;
 };
 

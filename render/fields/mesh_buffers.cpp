@@ -136,7 +136,7 @@ void MeshBuffers::keep_cpu_copy(const std::vector<GpuVertex>& v) {
 void MeshBuffers::upload(FieldUpload&& u) {
     if (u.vertices.size() != vertex_count_) throw std::invalid_argument("MeshBuffers: upload for a different mesh");
     feature_size_ = u.feature_size;
-    ranges_ = u.ranges;
+    range_known_ = {};
     seeds_stale_ = true;  // drawn again from the new surface when hatching asks (hatch_seeds)
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
@@ -148,6 +148,12 @@ void MeshBuffers::upload(FieldUpload&& u) {
                     cpu_mesh_.positions.data());
     clusters_ = std::move(u.clusters);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+float MeshBuffers::map_range(ColorMap map) const {
+    const size_t m = size_t(map);
+    if (!range_known_[m]) ranges_[m] = robust_range(map, cpu_fields_), range_known_[m] = true;
+    return ranges_[m];
 }
 
 const std::vector<MeshBuffers::Seed>& MeshBuffers::hatch_seeds() {

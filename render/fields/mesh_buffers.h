@@ -102,8 +102,10 @@ public:
     const BackFaceVisibility& back_faces() const { return back_faces_; }
     // The faces are uploaded cluster by cluster (render/lines/cluster_culling.h).
     const MeshClusters& clusters() const { return clusters_; }
-    // Robust colour-map range (render/surface/colormap.h), computed at upload.
-    float map_range(ColorMap map) const { return ranges_[size_t(map)]; }
+    // Robust colour-map range (render/surface/colormap.h) of the fields
+    // uploaded last, worked out from the CPU copy when a map first asks for
+    // it: a drawing pays for the one map it shows, not for all seven.
+    float map_range(ColorMap map) const;
 
 private:
     // Everything but the fields: bounds, triangles in cluster order, boundary edges, the buffers.
@@ -122,7 +124,8 @@ private:
     BackFaceVisibility back_faces_;
     FaceClusters face_clusters_;
     MeshClusters clusters_;
-    std::array<float, 7> ranges_{};
+    mutable std::array<float, 7> ranges_{};
+    mutable std::array<bool, 7> range_known_{};  // all false after an upload
     Mesh cpu_mesh_;
     SurfaceFields cpu_fields_;
     std::vector<glm::vec3> cpu_fine_normals_;
