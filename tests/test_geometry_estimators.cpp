@@ -214,3 +214,32 @@ TEST_CASE("Every estimator's error is bounded from above (not only compared with
         CHECK(e.curvature < b.curvature);
     }
 }
+
+TEST_CASE("On clean uniform meshes the jet beats a degree-4 2-ring jet (CGAL's configuration)", "[estimators][jet]") {
+    // CGAL's Monge_via_jet_fitting (degree 4, 2-ring; bench/cgal_jet_estimate.h)
+    // equals kappa's degree-4 2-ring jet to 3 digits on these meshes (accuracy
+    // lab, 2026-11-27), so the fixed jet stands in for CGAL here. Measured
+    // ratios jet / fixed (curvature, C): unit icosphere level 5 0.68, 0.61;
+    // torus 200 x 100 0.87, 0.23; torus 100 x 50 (coarse: the 2-ring's fit
+    // wins the choice) 0.24, 0.25. Before the choice between rings (issue 25)
+    // they were 0.31, 1.42; 1.02, 0.25; 2.5, 2.0.
+    struct Case {
+        const char* name;
+        AnalyticMesh mesh;
+        double curvature, dcurv;  // bounds on the ratios
+    };
+    const Case cases[] = {
+        {"icosphere 5", test::analytic_ellipsoid(1, 1, 1, 5), 0.85, 0.8},
+        {"torus 200 x 100", test::analytic_torus(1, 0.4, 200, 100), 0.95, 0.4},
+        {"torus 100 x 50", test::analytic_torus(1, 0.4, 100, 50), 0.5, 0.5},
+    };
+    for (const Case& c : cases) {
+        const test::EstimatorInputs in = test::estimator_inputs(c.mesh.mesh);
+        const Errors jet = errors(estimate_jet(in.of(c.mesh.mesh)), c.mesh);
+        const Errors fixed = errors(estimate_jet(in.of(c.mesh.mesh), jet_options(4, 2)), c.mesh);
+        INFO(c.name << ": jet " << jet.curvature << " / " << jet.dcurv << ", degree 4 on the 2-ring "
+                    << fixed.curvature << " / " << fixed.dcurv);
+        CHECK(jet.curvature < c.curvature * fixed.curvature);
+        CHECK(jet.dcurv < c.dcurv * fixed.dcurv);
+    }
+}

@@ -44,6 +44,30 @@ constexpr float kSideCosine = 0.5f;
 // rounding-limited.
 constexpr double kFloatRounding = 6e-8;
 constexpr double kRoundingResidual = 0.3;
+// The RMS of a height's rounding error relative to kFloatRounding times the
+// largest coordinate (uniform error: 1 / sqrt(3) of its bound, the bound
+// 0.5 to 1 times kFloatRounding |x|).
+constexpr double kRoundingNoise = 0.45;
+// The inner candidate's ring. choose_terms' thresholds: for the curvature
+// terms 2, about 2 / (1 + beta) with beta = (2/3)^4 (truncation of jets of
+// degree 4 and 5 goes as the fourth power of the ring's radius); for C, 9:
+// a C from the 2-ring is far noisier (measured on spheres, tori,
+// ellipsoids and cubic patches of 162 to 80k vertices, as the accuracy lab
+// builds them: 9 keeps the 3-ring's C on fine meshes, where rounding rules,
+// and takes the 2-ring's on coarse ones). kQuinticF: the F value (6 and
+// about 16 degrees of freedom) above which the fifth-order terms count,
+// about its 99th percentile.
+constexpr int kInnerRings = 2;
+constexpr double kCurvatureAgreement = 2.0, kDcurvAgreement = 9.0;
+constexpr double kQuinticF = 4.0;
+// The mesh's noise for choose_terms: from at most this many vertices
+// (JetFitter::noise2).
+constexpr size_t kNoiseSamples = 4096;
+
+// The largest rounding of a position's coordinates: kFloatRounding times the largest.
+double vertex_rounding(const glm::vec3& p) {
+    return kFloatRounding * std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+}
 
 // Unknowns of a degree-d jet: 6, 10, 15, 21 for d = 2, 3, 4, 5.
 int coefficient_count(int degree) { return (degree + 1) * (degree + 2) / 2; }
@@ -63,74 +87,52 @@ struct VertexJet {
     Tensor2 tensor;
     glm::vec4 dcurv{0.0f};
     bool full = false;  // degree 4 (or the degree asked for, if lower) on a sufficient neighbourhood
-    double residual = 0;  // RMS height residual of the fit, model units
 };
 
-// Fits the jet of vertex v over `ring` (v first) in the frame (u, w, n) and
-// reads normal, II and C off it. Returns false when no degree >= 2 fits.
-// Top: the largest degree the normal equations are built for (a constant,
-// so the moment loops unroll); `degree` <= Top is tried first.
-template <int Top>
-bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::dvec3& n, int degree,
-                VertexJet& out) {
-    constexpr int kUnknowns = (Top + 1) * (Top + 2) / 2;
-    const glm::dvec3 p0(mesh.positions[ring[0]]);
-    glm::vec3 fu, fw;
-    tangent_frame(glm::vec3(n), fu, fw);
-    const glm::dvec3 u(fu), w(fw);
-    double scale = 0;
-    for (uint32_t q : ring) {
-        const glm::dvec3 d = glm::dvec3(mesh.positions[q]) - p0;
-        scale = std::max(scale, glm::dot(d, d));
+// The terms a choice compares: the curvature's (x^2, xy, y^2) and C's
+// (x^3, ..., y^3), as indices of the coefficients.
+constexpr int kCurvatureTerms[3] = {3, 4, 5};
+constexpr int kDcurvTerms[4] = {6, 7, 8, 9};
+
+// One candidate fit of a vertex: its coefficients up to degree 3 (scaled
+// coordinates x / scale, frame (u, w, n)) and the variance factors of its
+// curvature terms and of its C terms (each summed, for unit height noise).
+struct JetCandidate {
+    double c[10];
+    double variance[2];
+};
+
+// One vertex's candidate fits, from the least noisy to the least biased
+// (choose_terms): with a degree-5 fit, degree 4 over the same ring, the
+// degree-5 fit, and the inner fit (degree 4 on the 2-ring, the degree-5
+// fit's fifth-order part subtracted from the heights first); with a
+// degree-4 fit, it and the inner fit (plain).
+struct JetFit {
+    JetCandidate candidate[3];
+    int count = 0, planned = 0;  // candidates; the index of the plan's own fit
+    int outer = 0;               // the whole ring's candidate choose_terms weighs against the inner one
+    bool has_inner = false;      // the last candidate is the inner fit
+    glm::dvec3 u, w, n;
+    double scale = 1;
+    bool full = false;         // the plan's fit: degree 4 (or the degree asked for) or more
+    double residual = 0;       // RMS height residual of the plan's fit, model units
+    // Median-unbiased sigma^2 estimates (model units; < 0: none) of plain
+    // degree-4 fits on the inner points and on the whole ring (JetFitter::noise2).
+    double inner_noise2 = -1, outer_noise2 = -1;
+    // The same of the inner candidate and of the plan's fit (choose_terms' noise).
+    double nested_noise2 = -1, planned_noise2 = -1;
+
+    // The plan's fit's normal (only its gradient).
+    glm::vec3 planned_normal() const {
+        const double* c = candidate[planned].c;
+        return glm::vec3(glm::normalize(-c[1] * u - c[2] * w + n));
     }
-    if (!(scale > 0) || !std::isfinite(scale)) return false;
-    scale = std::sqrt(scale);
-    const double inv = 1.0 / scale;
-    // A^T A of the monomial rows holds only the moments sum x^i y^j,
-    // i + j <= 2 degree (45 for degree 4), and A^T z the sums z x^i y^j,
-    // i + j <= degree: accumulating those costs a third of the row-by-row
-    // products.
-    double moment[2 * Top + 1][2 * Top + 1] = {}, zmoment[Top + 1][Top + 1] = {}, zz = 0;
-    for (uint32_t q : ring) {
-        const glm::dvec3 d = (glm::dvec3(mesh.positions[q]) - p0) * inv;
-        const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
-        double px[2 * Top + 1], py[2 * Top + 1];
-        px[0] = py[0] = 1;
-        KAPPA_UNROLL
-        for (int i = 1; i <= 2 * Top; ++i) {
-            px[i] = px[i - 1] * x;
-            py[i] = py[i - 1] * y;
-        }
-        KAPPA_UNROLL
-        for (int i = 0; i <= 2 * Top; ++i) {
-            KAPPA_UNROLL
-            for (int j = 0; j + i <= 2 * Top; ++j) moment[i][j] += px[i] * py[j];
-        }
-        KAPPA_UNROLL
-        for (int i = 0; i <= Top; ++i) {
-            KAPPA_UNROLL
-            for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
-        }
-        zz += z * z;
-    }
-    NormalEquations<kUnknowns> eq;
-    eq.set_btb(zz);
-    for (int a = 0; a < kUnknowns; ++a) {
-        eq.set_rhs(a, zmoment[kPowerX[a]][kPowerY[a]]);
-        for (int b = a; b < kUnknowns; ++b) eq.set(a, b, moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
-    }
-    double c[kUnknowns];
-    int used = 0;
-    for (int deg = degree; deg >= 2; --deg) {
-        if (ring.size() < points_needed(deg)) continue;
-        if (eq.solve(coefficient_count(deg), c, kPivotTolerance)) {
-            used = deg;
-            break;
-        }
-    }
-    if (used == 0) return false;
-    const int k = coefficient_count(used);
-    out.residual = ring.size() > size_t(k) ? std::sqrt(eq.residual(c, k) / double(ring.size() - k)) * scale : 0.0;
+};
+
+// Reads the normal, II and C off the coefficients c (scaled coordinates,
+// frame (u, w, n)), gradient included. False on non-finite values.
+bool read_jet(const double (&c)[10], double inv, const glm::dvec3& u, const glm::dvec3& w, const glm::dvec3& n,
+              VertexJet& out) {
     // Derivatives at the origin in model units: f(x) = scale f'(x / scale).
     HeightDerivatives h;
     h.fx = c[1];
@@ -160,14 +162,333 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
         if (!std::isfinite(x)) return false;
     out.tensor = {float(II[0]), float(II[1]), float(II[2])};
     out.dcurv = glm::vec4(float(C[0]), float(C[1]), float(C[2]), float(C[3]));
-    out.full = used >= std::min(degree, 4);
     return true;
 }
 
-bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::dvec3& n, int degree,
-                VertexJet& out) {
-    return degree > 4 ? fit_vertex<5>(mesh, ring, n, degree, out) : fit_vertex<4>(mesh, ring, n, degree, out);
+// The median of the values >= 0 (0 when none); reorders them.
+double median_of_valid(std::vector<double>& values) {
+    values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !(x >= 0); }), values.end());
+    if (values.empty()) return 0;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
 }
+
+// The Wilson-Hilferty median of chi^2(k) / k: divides a residual variance
+// with k degrees of freedom to make it median-unbiased (noise_level.h).
+double chi2_median_factor(double k) { return std::pow(1.0 - 2.0 / (9.0 * k), 3.0); }
+
+// Fits the jet of vertex v over `ring` (v first) in the frame (u, w, n) and,
+// with inner >= points_needed(4), the inner candidate over ring[0, inner)
+// (the 2-ring: rings are breadth-first). Returns false when no degree >= 2
+// fits the whole ring. Top: the largest degree the normal equations are
+// built for (a constant, so the moment loops unroll); `degree` <= Top is
+// tried first.
+template <int Top>
+bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::dvec3& n, int degree, size_t inner,
+                bool noise_fits, JetFit& out) {
+    constexpr int kUnknowns = (Top + 1) * (Top + 2) / 2;
+    constexpr int kMoments = 2 * Top + 1;
+    const glm::dvec3 p0(mesh.positions[ring[0]]);
+    glm::vec3 fu, fw;
+    tangent_frame(glm::vec3(n), fu, fw);
+    const glm::dvec3 u(fu), w(fw);
+    double scale = 0;
+    for (uint32_t q : ring) {
+        const glm::dvec3 d = glm::dvec3(mesh.positions[q]) - p0;
+        scale = std::max(scale, glm::dot(d, d));
+    }
+    if (!(scale > 0) || !std::isfinite(scale)) return false;
+    scale = std::sqrt(scale);
+    const double inv = 1.0 / scale;
+    // A^T A of the monomial rows holds only the moments sum x^i y^j,
+    // i + j <= 2 degree (45 for degree 4), and A^T z the sums z x^i y^j,
+    // i + j <= degree: accumulating those costs a third of the row-by-row
+    // products. The inner candidate's are the sums over the first `inner` points.
+    double moment[kMoments][kMoments] = {}, zmoment[Top + 1][Top + 1] = {}, zz = 0;
+    double inner_moment[kMoments][kMoments], inner_zmoment[Top + 1][Top + 1], inner_zz = 0;
+    const bool with_inner = inner >= points_needed(4) && inner < ring.size();
+    for (size_t index = 0; index < ring.size(); ++index) {
+        if (with_inner && index == inner) {
+            std::copy(&moment[0][0], &moment[0][0] + kMoments * kMoments, &inner_moment[0][0]);
+            std::copy(&zmoment[0][0], &zmoment[0][0] + (Top + 1) * (Top + 1), &inner_zmoment[0][0]);
+            inner_zz = zz;
+        }
+        const glm::dvec3 d = (glm::dvec3(mesh.positions[ring[index]]) - p0) * inv;
+        const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
+        double px[kMoments], py[kMoments];
+        px[0] = py[0] = 1;
+        KAPPA_UNROLL
+        for (int i = 1; i < kMoments; ++i) {
+            px[i] = px[i - 1] * x;
+            py[i] = py[i - 1] * y;
+        }
+        KAPPA_UNROLL
+        for (int i = 0; i < kMoments; ++i) {
+            KAPPA_UNROLL
+            for (int j = 0; j + i < kMoments; ++j) moment[i][j] += px[i] * py[j];
+        }
+        KAPPA_UNROLL
+        for (int i = 0; i <= Top; ++i) {
+            KAPPA_UNROLL
+            for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
+        }
+        zz += z * z;
+    }
+    NormalEquations<kUnknowns> eq;
+    eq.set_btb(zz);
+    for (int a = 0; a < kUnknowns; ++a) {
+        eq.set_rhs(a, zmoment[kPowerX[a]][kPowerY[a]]);
+        for (int b = a; b < kUnknowns; ++b) eq.set(a, b, moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
+    }
+    constexpr int kTerms[7] = {3, 4, 5, 6, 7, 8, 9};  // kCurvatureTerms, then kDcurvTerms
+    // Stores a solution as candidate `index`.
+    const auto keep = [&](int index, const double* x, const double (&variance)[7], int terms) {
+        JetCandidate& cand = out.candidate[index];
+        std::copy(x, x + 10, cand.c);
+        cand.variance[0] = variance[0] + variance[1] + variance[2];
+        cand.variance[1] = terms > 3 ? variance[3] + variance[4] + variance[5] + variance[6] : 0.0;
+    };
+    double c[kUnknowns], variance[7];
+    int used = 0;
+    for (int deg = degree; deg >= 2; --deg) {
+        if (ring.size() < points_needed(deg)) continue;
+        if (eq.solve(coefficient_count(deg), c, kPivotTolerance, kTerms, deg >= 3 ? 7 : 3, variance)) {
+            used = deg;
+            break;
+        }
+    }
+    if (used == 0) return false;
+    const int k = coefficient_count(used);
+    out.u = u;
+    out.w = w;
+    out.n = n;
+    out.scale = scale;
+    out.full = used >= std::min(degree, 4);
+    out.residual = ring.size() > size_t(k) ? std::sqrt(eq.residual(c, k) / double(ring.size() - k)) * scale : 0.0;
+    out.inner_noise2 = out.outer_noise2 = out.nested_noise2 = out.planned_noise2 = -1;
+    if (ring.size() >= size_t(k) + 2) {
+        const double dof = double(ring.size()) - k;
+        out.planned_noise2 = eq.residual(c, k) / dof / chi2_median_factor(dof) * scale * scale;
+    }
+    out.count = 0;
+    out.outer = 0;
+    out.has_inner = false;
+    double c4[kUnknowns], variance4[7];
+    if (used == 5 && eq.solve(15, c4, kPivotTolerance, kTerms, 7, variance4)) {
+        keep(out.count++, c4, variance4, 7);
+        const double dof4 = double(ring.size()) - 15;
+        if (dof4 >= 2) out.outer_noise2 = eq.residual(c4, 15) / dof4 / chi2_median_factor(dof4) * scale * scale;
+        // The F test of the fifth-order terms (6 of them) against the
+        // degree-5 fit's residual: where they explain no more than it,
+        // degree 4 on the same ring (less noisy) is the outer fit.
+        const double dof = double(ring.size()) - k, rss = eq.residual(c, k);
+        const double f = dof >= 1 && rss > 0 ? (eq.residual(c4, 15) - rss) / 6 / (rss / dof) : 1e300;
+        if (!(f < kQuinticF)) out.outer = 1;
+    }
+    out.planned = out.count;
+    keep(out.count++, c, variance, used >= 3 ? 7 : 3);
+    if (!with_inner || used < 4) return true;
+
+    // The inner candidate: degree 4 on the inner points, heights less the
+    // plan's fit's terms of degree 5 (none for a degree-4 fit):
+    // A^T (z - A5 c5) and |z - A5 c5|^2 from the same moments.
+    constexpr int k4 = 15;
+    NormalEquations<kUnknowns> in_eq;
+    double zz5 = inner_zz;
+    for (int m = k4; m < k; ++m) {
+        zz5 -= 2 * c[m] * inner_zmoment[kPowerX[m]][kPowerY[m]];
+        for (int m2 = k4; m2 < k; ++m2)
+            zz5 += c[m] * c[m2] * inner_moment[kPowerX[m] + kPowerX[m2]][kPowerY[m] + kPowerY[m2]];
+    }
+    in_eq.set_btb(zz5);
+    for (int a = 0; a < k4; ++a) {
+        double rhs = inner_zmoment[kPowerX[a]][kPowerY[a]];
+        for (int m = k4; m < k; ++m) rhs -= c[m] * inner_moment[kPowerX[a] + kPowerX[m]][kPowerY[a] + kPowerY[m]];
+        in_eq.set_rhs(a, rhs);
+        for (int b = a; b < k4; ++b) in_eq.set(a, b, inner_moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
+    }
+    double ci[kUnknowns], inner_variance[7];
+    if (!in_eq.solve(k4, ci, kPivotTolerance, kTerms, 7, inner_variance)) return true;
+    keep(out.count++, ci, inner_variance, 7);
+    out.has_inner = true;
+    const double dof = double(inner) - k4;
+    if (dof >= 2) out.nested_noise2 = in_eq.residual(ci, k4) / dof / chi2_median_factor(dof) * scale * scale;
+    if (noise_fits && dof >= 2) {  // a plain degree-4 fit on the inner points
+        NormalEquations<kUnknowns> plain;
+        plain.set_btb(inner_zz);
+        for (int a = 0; a < k4; ++a) {
+            plain.set_rhs(a, inner_zmoment[kPowerX[a]][kPowerY[a]]);
+            for (int b = a; b < k4; ++b)
+                plain.set(a, b, inner_moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
+        }
+        double cp[kUnknowns];
+        if (plain.solve(k4, cp, kPivotTolerance))
+            out.inner_noise2 = plain.residual(cp, k4) / dof / chi2_median_factor(dof) * scale * scale;
+    }
+    return true;
+}
+
+bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::dvec3& n, int degree, size_t inner,
+                bool noise_fits, JetFit& out) {
+    return degree > 4 ? fit_vertex<5>(mesh, ring, n, degree, inner, noise_fits, out)
+                      : fit_vertex<4>(mesh, ring, n, degree, inner, noise_fits, out);
+}
+
+// Which candidate gives a group of terms (0: curvature, 1: C), for noise
+// sigma^2 (model units): the plug-in choice between the outer and the inner
+// fit (Lepski's principle with the bias made explicit). The inner fit has
+// less bias (a fraction beta of the outer's) and more variance; the outer
+// bias b shows in their difference, E|D|^2 = (1 - beta)^2 b^2 + sigma^2 gap
+// (gap: the variance of the difference of nested least-squares fits, V_inner
+// - V_outer), and the inner fit has the smaller expected error, beta^2 b^2
+// + sigma^2 V_inner < b^2 + sigma^2 V_outer, when |D|^2 > 2 / (1 + beta)
+// sigma^2 gap. |D|^2 is itself noisy, and where noise dominates (fine
+// meshes: rounding) a wrong inner choice costs more than a wrong outer one:
+// the thresholds (kCurvatureAgreement, kDcurvAgreement) are at least that.
+int choose_terms(const JetFit& fit, int group, double noise2) {
+    if (!fit.has_inner) return fit.outer;
+    const int inner = fit.count - 1;
+    const JetCandidate& a = fit.candidate[fit.outer];
+    const JetCandidate& b = fit.candidate[inner];
+    const int* terms = group == 0 ? kCurvatureTerms : kDcurvTerms;
+    double d2 = 0;
+    for (int t = 0; t < (group == 0 ? 3 : 4); ++t) d2 += (a.c[terms[t]] - b.c[terms[t]]) * (a.c[terms[t]] - b.c[terms[t]]);
+    const double unit2 = noise2 / (fit.scale * fit.scale);  // heights are scaled by 1 / scale
+    const double gap = std::max(b.variance[group] - a.variance[group], 0.0);
+    return d2 > (group == 0 ? kCurvatureAgreement : kDcurvAgreement) * unit2 * gap ? inner : fit.outer;
+}
+
+// The vertex's normal, II and C: the terms up to degree 2 (normal and II)
+// and those of degree 3 (C), each from the candidate choose_terms takes.
+bool choose_jet(const JetFit& fit, double noise2, VertexJet& out) {
+    double c[10];
+    const JetCandidate& curvature = fit.candidate[choose_terms(fit, 0, noise2)];
+    const JetCandidate& dcurv = fit.candidate[choose_terms(fit, 1, noise2)];
+    std::copy(curvature.c, curvature.c + 6, c);
+    std::copy(dcurv.c + 6, dcurv.c + 10, c + 6);
+    out.full = fit.full;
+    return read_jet(c, 1.0 / fit.scale, fit.u, fit.w, fit.n, out);
+}
+
+// Fits every vertex with one degree and ring (JetOptions, or a jet plan).
+class JetFitter {
+public:
+    JetFitter(const EstimatorInput& in, const VertexAdjacency& adj, const JetOptions& options, int degree,
+              int rings)
+        : in_(in), adj_(adj), options_(options), degree_(std::clamp(degree, 2, kMaxDegree)), rings_(rings),
+          max_rings_(std::max(rings, options.max_rings)), automatic_(options.rings <= 0),
+          with_inner_(automatic_ && degree_ == 5 && rings > kInnerRings) {}
+
+    // Both fits of vertex v: the ring (grown where too small for the
+    // degree), and one ring more where the fit is rounding-limited.
+    bool fit(size_t v, RingCollector& rings, std::vector<uint32_t>& ring, JetFit& fit) const {
+        const std::vector<uint32_t>& all = rings.collect(adj_, uint32_t(v), std::min(rings_, kInnerRings));
+        const size_t inner_all = with_inner_ ? all.size() : 0;
+        for (int r = std::min(rings_, kInnerRings); r < rings_;) {
+            const size_t before = all.size();
+            r = rings.grow(adj_);
+            if (all.size() == before) break;
+        }
+        for (int r = rings_; all.size() < points_needed(degree_) && r < max_rings_;) {
+            const size_t before = all.size();
+            r = rings.grow(adj_);
+            if (all.size() == before) break;
+        }
+        if (!fit_ring(all, inner_all, v, ring, fit)) return false;
+        // A residual at the level of the positions' float rounding means
+        // truncation is negligible and rounding dominates: a wider ring
+        // averages it down (flat regions, fine tessellations).
+        const double rounding = vertex_rounding(in_.mesh.positions[v]);
+        if (automatic_ && fit.residual < kRoundingResidual * rounding) {
+            const size_t before = all.size();
+            rings.grow(adj_);
+            JetFit wider;
+            // Kept only if it is rounding-limited too: a wider ring that
+            // reaches other features (or damage) is not a better fit.
+            if (all.size() > before && fit_ring(all, inner_all, v, ring, wider) &&
+                wider.residual < 2 * kRoundingResidual * rounding)
+                fit = wider;
+        }
+        return true;
+    }
+
+    // Noise variances of the heights from a sample of vertices (every
+    // (V / kNoiseSamples)-th), each from the medians of two fits' residual
+    // variances R_in^2 = sigma^2 + beta^2 T^2 (2-ring) and R^2 = sigma^2 + T^2
+    // (whole ring), T the truncation left on the whole ring and beta its
+    // share on the 2-ring, solved for sigma^2. `plan`: plain degree-4 fits,
+    // beta = (2/3)^5 (fifth-order terms); unbiased under noise, it decides
+    // the plan (unlike the cubic fits of noise_level.h it sees little of a
+    // coarse clean mesh's truncation). `choice`: the inner candidates and the
+    // degree-5 fits, beta = (2/3)^6; it sees even less truncation but is
+    // biased low under noise (the inner fit shares the outer's fifth-order
+    // terms), so it serves only the clean plan's choose_terms.
+    struct NoiseEstimates {
+        double plan = 0, choice = 0;
+    };
+    NoiseEstimates noise2() const {
+        const size_t nv = in_.mesh.vertex_count();
+        if (!with_inner_ || nv == 0) return {};
+        const size_t step = (nv + kNoiseSamples - 1) / kNoiseSamples;
+        const size_t count = (nv + step - 1) / step;
+        std::vector<double> inner(count, -1.0), outer(count, -1.0), nested(count, -1.0), planned(count, -1.0);
+        noise_fits_ = true;
+        parallel_for_ranges(count, [&](size_t begin, size_t end) {
+            RingCollector rings(nv);
+            std::vector<uint32_t> ring;
+            JetFit f;
+            for (size_t i = begin; i < end; ++i)
+                if (fit(i * step, rings, ring, f)) {
+                    inner[i] = f.inner_noise2;
+                    outer[i] = f.outer_noise2;
+                    nested[i] = f.nested_noise2;
+                    planned[i] = f.planned_noise2;
+                }
+        });
+        noise_fits_ = false;
+        const auto solve = [](double r_in2, double r2, double beta) {
+            const double t2 = std::max(r2 - r_in2, 0.0) / (1 - beta * beta);
+            return std::max(r_in2 - beta * beta * t2, 0.0);
+        };
+        return {solve(median_of_valid(inner), median_of_valid(outer), 32.0 / 243.0),
+                solve(median_of_valid(nested), median_of_valid(planned), 64.0 / 729.0)};
+    }
+
+private:
+    // Fits vertex v over `all` less the vertices facing away by more than
+    // 60 degrees (the surface is a usable height function over the tangent
+    // plane only there: a ring that wraps round a thin part, an ear, reaches
+    // the other side); again in the jet normal's frame where the vertex
+    // normal was more than 5 degrees off (a poor normal, e.g. at folded
+    // triangles). `inner_all`: the 2-ring's size in `all` (0: no inner fit).
+    bool fit_ring(const std::vector<uint32_t>& all, size_t inner_all, size_t v, std::vector<uint32_t>& ring,
+                  JetFit& fit) const {
+        ring.clear();
+        size_t inner = 0;
+        for (size_t i = 0; i < all.size(); ++i) {
+            const uint32_t q = all[i];
+            if (q == v || glm::dot(in_.normals[q], in_.normals[v]) > kSideCosine) ring.push_back(q);
+            if (i + 1 == inner_all) inner = ring.size();
+        }
+        if (!fit_vertex(in_.mesh, ring, glm::dvec3(in_.normals[v]), degree_, inner, noise_fits_, fit)) return false;
+        for (int again = 0; options_.refit && again < 2 && glm::dot(fit.planned_normal(), in_.normals[v]) < kRefitCosine;
+             ++again) {
+            JetFit refit;
+            if (!fit_vertex(in_.mesh, ring, glm::dvec3(fit.planned_normal()), degree_, inner, noise_fits_, refit)) break;
+            const bool settled = glm::dot(refit.planned_normal(), fit.planned_normal()) >= kRefitCosine;
+            fit = refit;
+            if (settled) break;
+        }
+        return true;
+    }
+
+    const EstimatorInput& in_;
+    const VertexAdjacency& adj_;
+    const JetOptions& options_;
+    int degree_, rings_, max_rings_;
+    bool automatic_, with_inner_;
+    mutable bool noise_fits_ = false;  // during noise2() only
+};
 
 }  // namespace
 
@@ -180,70 +501,35 @@ JetPlan jet_plan_for_noise(float relative_noise) {
 
 CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& options) {
     const size_t nv = in.mesh.vertex_count();
+    const VertexAdjacency adj = build_vertex_adjacency(in.mesh, in.vf);
     JetPlan plan{options.degree, options.rings};
+    double noise2 = 0;  // the heights' noise variance for the inner choice
     if (plan.degree <= 0 || plan.rings <= 0) {
-        const JetPlan automatic = jet_plan_for_noise(estimate_noise_level(in.mesh, in.vf, in.normals).relative);
+        // The noise level (scale/noise_level.h) reads a cubic fit's
+        // truncation as noise on coarse clean meshes; the clean plan's inner
+        // fits see far less of it. The smaller of the two decides.
+        const NoiseLevel noise = estimate_noise_level(in.mesh, in.vf, in.normals);
+        const JetPlan clean = jet_plan_for_noise(0);
+        const auto estimates = JetFitter(in, adj, options, clean.degree, clean.rings).noise2();
+        noise2 = estimates.choice;
+        const float relative = noise.median_edge > 0 ? float(std::sqrt(estimates.plan)) / noise.median_edge : 0.0f;
+        const JetPlan automatic = jet_plan_for_noise(std::min(noise.relative, relative));
         if (plan.degree <= 0) plan.degree = automatic.degree;
         if (plan.rings <= 0) plan.rings = automatic.rings;
     }
-    const int degree = std::clamp(plan.degree, 2, kMaxDegree);
-    const int base_rings = plan.rings;
-    const int max_rings = std::max(base_rings, options.max_rings);
-    const VertexAdjacency adj = build_vertex_adjacency(in.mesh, in.vf);
+    const JetFitter fitter(in, adj, options, plan.degree, plan.rings);
     CurvatureEstimate out = empty_estimate(nv, true);
     out.normals = in.normals;
-    const bool grow_when_exact = options.rings <= 0;
     parallel_for_ranges(nv, [&](size_t begin, size_t end) {
         RingCollector rings(nv);
         std::vector<uint32_t> ring;
-        // Fits vertex v over `all` less the vertices facing away by more than
-        // 60 degrees (the surface is a usable height function over the
-        // tangent plane only there: a ring that wraps round a thin part, an
-        // ear, reaches the other side);
-        // again in the jet normal's frame where the vertex normal was more
-        // than 5 degrees off (a poor normal, e.g. at folded triangles).
-        const auto fit_ring = [&](const std::vector<uint32_t>& all, size_t v, VertexJet& jet) {
-            ring.clear();
-            for (uint32_t q : all)
-                if (q == v || glm::dot(in.normals[q], in.normals[v]) > kSideCosine) ring.push_back(q);
-            if (!fit_vertex(in.mesh, ring, glm::dvec3(in.normals[v]), degree, jet)) return false;
-            for (int again = 0; options.refit && again < 2 && glm::dot(jet.normal, in.normals[v]) < kRefitCosine;
-                 ++again) {
-                VertexJet refit;
-                if (!fit_vertex(in.mesh, ring, glm::dvec3(jet.normal), degree, refit)) break;
-                const bool settled = glm::dot(refit.normal, jet.normal) >= kRefitCosine;
-                jet = refit;
-                if (settled) break;
-            }
-            return true;
-        };
+        JetFit fit;
         for (size_t v = begin; v < end; ++v) {
-            const std::vector<uint32_t>& all = rings.collect(adj, uint32_t(v), base_rings);
-            for (int r = base_rings; all.size() < points_needed(degree) && r < max_rings;) {
-                const size_t before = all.size();
-                r = rings.grow(adj);
-                if (all.size() == before) break;
-            }
             VertexJet jet;
-            if (!fit_ring(all, v, jet)) {
+            const double rounding = kRoundingNoise * vertex_rounding(in.mesh.positions[v]);
+            if (!fitter.fit(v, rings, ring, fit) || !choose_jet(fit, std::max(noise2, rounding * rounding), jet)) {
                 out.flags[v] = kFlagFallback;
                 continue;
-            }
-            // A residual at the level of the positions' float rounding means
-            // truncation is negligible and rounding dominates: a wider ring
-            // averages it down (flat regions, fine tessellations).
-            const glm::vec3 p0 = in.mesh.positions[v];
-            const double rounding =
-                kFloatRounding * std::max({std::fabs(p0.x), std::fabs(p0.y), std::fabs(p0.z)});
-            if (grow_when_exact && jet.residual < kRoundingResidual * rounding) {
-                const size_t before = all.size();
-                rings.grow(adj);
-                VertexJet wider;
-                // Kept only if it is rounding-limited too: a wider ring that
-                // reaches other features (or damage) is not a better fit.
-                if (all.size() > before && fit_ring(all, v, wider) &&
-                    wider.residual < 2 * kRoundingResidual * rounding)
-                    jet = wider;
             }
             out.normals[v] = jet.normal;
             out.tensors.tensor[v] = jet.tensor;

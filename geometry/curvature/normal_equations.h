@@ -36,23 +36,13 @@ public:
     // Solves for the first k unknowns only (the others set to 0). Returns
     // false when the block is not numerically positive definite after
     // equilibration (a pivot below rel_tol), or on non-finite values.
-    bool solve(int k, double (&x)[N], double rel_tol = 1e-11) const {
+    bool solve(int k, double (&x)[N], double rel_tol = 1e-11) const { return solve(k, x, rel_tol, nullptr, 0, nullptr); }
+
+    // The same, and the diagonal entries (A^T A)^-1_ii of the k x k block for
+    // the `count` unknowns index[0..count): their variances for unit noise on b.
+    bool solve(int k, double (&x)[N], double rel_tol, const int* index, int count, double* variance) const {
         double d[N], l[N][N];
-        for (int i = 0; i < k; ++i) {
-            if (!(ata_[i][i] > 0) || !std::isfinite(ata_[i][i])) return false;
-            d[i] = 1.0 / std::sqrt(ata_[i][i]);
-        }
-        for (int j = 0; j < k; ++j) {  // Cholesky of D A D, column by column
-            double s = ata_[j][j] * d[j] * d[j];
-            for (int p = 0; p < j; ++p) s -= l[j][p] * l[j][p];
-            if (!(s > rel_tol)) return false;
-            l[j][j] = std::sqrt(s);
-            for (int i = j + 1; i < k; ++i) {
-                double t = ata_[j][i] * d[i] * d[j];
-                for (int p = 0; p < j; ++p) t -= l[i][p] * l[j][p];
-                l[i][j] = t / l[j][j];
-            }
-        }
+        if (!factor(k, rel_tol, d, l)) return false;
         double y[N];
         for (int i = 0; i < k; ++i) {
             double s = atb_[i] * d[i];
@@ -67,6 +57,18 @@ public:
         for (int i = 0; i < k; ++i)
             if (!std::isfinite(y[i])) return false;
         for (int i = 0; i < N; ++i) x[i] = i < k ? y[i] * d[i] : 0.0;
+        // (A^T A)^-1 = D (L L^T)^-1 D, so entry ii is d_i^2 |L^-1 e_i|^2.
+        for (int c = 0; c < count; ++c) {
+            const int a = index[c];
+            double sum = 0;
+            for (int i = a; i < k; ++i) {  // L^-1 e_a is zero above a
+                double s = i == a ? 1.0 : 0.0;
+                for (int p = a; p < i; ++p) s -= l[i][p] * y[p];
+                y[i] = s / l[i][i];
+                sum += y[i] * y[i];
+            }
+            variance[c] = sum * d[a] * d[a];
+        }
         return true;
     }
 
@@ -82,6 +84,26 @@ public:
     }
 
 private:
+    // Cholesky L L^T of D A^T A D (first k unknowns), D = diag^-1/2.
+    bool factor(int k, double rel_tol, double (&d)[N], double (&l)[N][N]) const {
+        for (int i = 0; i < k; ++i) {
+            if (!(ata_[i][i] > 0) || !std::isfinite(ata_[i][i])) return false;
+            d[i] = 1.0 / std::sqrt(ata_[i][i]);
+        }
+        for (int j = 0; j < k; ++j) {  // column by column
+            double s = ata_[j][j] * d[j] * d[j];
+            for (int p = 0; p < j; ++p) s -= l[j][p] * l[j][p];
+            if (!(s > rel_tol)) return false;
+            l[j][j] = std::sqrt(s);
+            for (int i = j + 1; i < k; ++i) {
+                double t = ata_[j][i] * d[i] * d[j];
+                for (int p = 0; p < j; ++p) t -= l[i][p] * l[j][p];
+                l[i][j] = t / l[j][j];
+            }
+        }
+        return true;
+    }
+
     double ata_[N][N] = {};  // upper triangle used
     double atb_[N] = {};
     double btb_ = 0;
