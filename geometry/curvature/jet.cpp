@@ -207,33 +207,39 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
     double moment[kMoments][kMoments] = {}, zmoment[Top + 1][Top + 1] = {}, zz = 0;
     double inner_moment[kMoments][kMoments], inner_zmoment[Top + 1][Top + 1], inner_zz = 0;
     const bool with_inner = inner >= points_needed(4) && inner < ring.size();
-    for (size_t index = 0; index < ring.size(); ++index) {
-        if (with_inner && index == inner) {
-            std::copy(&moment[0][0], &moment[0][0] + kMoments * kMoments, &inner_moment[0][0]);
-            std::copy(&zmoment[0][0], &zmoment[0][0] + (Top + 1) * (Top + 1), &inner_zmoment[0][0]);
-            inner_zz = zz;
-        }
-        const glm::dvec3 d = (glm::dvec3(mesh.positions[ring[index]]) - p0) * inv;
-        const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
-        double px[kMoments], py[kMoments];
-        px[0] = py[0] = 1;
-        KAPPA_UNROLL
-        for (int i = 1; i < kMoments; ++i) {
-            px[i] = px[i - 1] * x;
-            py[i] = py[i - 1] * y;
-        }
-        KAPPA_UNROLL
-        for (int i = 0; i < kMoments; ++i) {
+    // Points [begin, end) into the sums (one loop without branches: it unrolls).
+    const auto accumulate = [&](size_t begin, size_t end) {
+        for (size_t index = begin; index < end; ++index) {
+            const glm::dvec3 d = (glm::dvec3(mesh.positions[ring[index]]) - p0) * inv;
+            const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
+            double px[kMoments], py[kMoments];
+            px[0] = py[0] = 1;
             KAPPA_UNROLL
-            for (int j = 0; j + i < kMoments; ++j) moment[i][j] += px[i] * py[j];
-        }
-        KAPPA_UNROLL
-        for (int i = 0; i <= Top; ++i) {
+            for (int i = 1; i < kMoments; ++i) {
+                px[i] = px[i - 1] * x;
+                py[i] = py[i - 1] * y;
+            }
             KAPPA_UNROLL
-            for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
+            for (int i = 0; i < kMoments; ++i) {
+                KAPPA_UNROLL
+                for (int j = 0; j + i < kMoments; ++j) moment[i][j] += px[i] * py[j];
+            }
+            KAPPA_UNROLL
+            for (int i = 0; i <= Top; ++i) {
+                KAPPA_UNROLL
+                for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
+            }
+            zz += z * z;
         }
-        zz += z * z;
+    };
+    const size_t split = with_inner ? inner : ring.size();
+    accumulate(0, split);
+    if (with_inner) {
+        std::copy(&moment[0][0], &moment[0][0] + kMoments * kMoments, &inner_moment[0][0]);
+        std::copy(&zmoment[0][0], &zmoment[0][0] + (Top + 1) * (Top + 1), &inner_zmoment[0][0]);
+        inner_zz = zz;
     }
+    accumulate(split, ring.size());
     NormalEquations<kUnknowns> eq;
     eq.set_btb(zz);
     for (int a = 0; a < kUnknowns; ++a) {
@@ -248,11 +254,13 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
         cand.variance[0] = variance[0] + variance[1] + variance[2];
         cand.variance[1] = terms > 3 ? variance[3] + variance[4] + variance[5] + variance[6] : 0.0;
     };
-    double c[kUnknowns], variance[7];
+    double c[kUnknowns], variance[7] = {};
     int used = 0;
     for (int deg = degree; deg >= 2; --deg) {
         if (ring.size() < points_needed(deg)) continue;
-        if (eq.solve(coefficient_count(deg), c, kPivotTolerance, kTerms, deg >= 3 ? 7 : 3, variance)) {
+        // Variance factors only where a choice will weigh them.
+        if (eq.solve(coefficient_count(deg), c, kPivotTolerance, kTerms, with_inner ? (deg >= 3 ? 7 : 3) : 0,
+                     variance)) {
             used = deg;
             break;
         }
@@ -274,7 +282,7 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
     out.outer = 0;
     out.has_inner = false;
     double c4[kUnknowns], variance4[7];
-    if (used == 5 && eq.solve(15, c4, kPivotTolerance, kTerms, 7, variance4)) {
+    if (with_inner && used == 5 && eq.solve(15, c4, kPivotTolerance, kTerms, 7, variance4)) {
         keep(out.count++, c4, variance4, 7);
         const double dof4 = double(ring.size()) - 15;
         if (dof4 >= 2) out.outer_noise2 = eq.residual(c4, 15) / dof4 / chi2_median_factor(dof4) * scale * scale;
