@@ -63,6 +63,8 @@ constexpr double kQuinticF = 4.0;
 // The mesh's noise for choose_terms: from at most this many vertices
 // (JetFitter::noise2).
 constexpr size_t kNoiseSamples = 4096;
+// Relative noise below which a mesh counts as clean (jet_plan_for_noise).
+constexpr float kCleanNoise = 3e-4f;
 
 // The largest rounding of a position's coordinates: kFloatRounding times the largest.
 double vertex_rounding(const glm::vec3& p) {
@@ -501,7 +503,7 @@ private:
 }  // namespace
 
 JetPlan jet_plan_for_noise(float relative_noise) {
-    if (!(relative_noise >= 3e-4f)) return {5, 3};
+    if (!(relative_noise >= kCleanNoise)) return {5, 3};
     if (relative_noise < 2e-3f) return {4, 3};
     if (relative_noise < 1e-2f) return {4, 4};
     return {4, 5};
@@ -514,14 +516,16 @@ CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& optio
     double noise2 = 0;  // the heights' noise variance for the inner choice
     if (plan.degree <= 0 || plan.rings <= 0) {
         // The noise level (scale/noise_level.h) reads a cubic fit's
-        // truncation as noise on coarse clean meshes; the clean plan's inner
-        // fits see far less of it. The smaller of the two decides.
+        // truncation as noise on coarse clean meshes; the clean plan's
+        // degree-4 fits on two rings see far less of it (JetFitter::noise2).
         const NoiseLevel noise = estimate_noise_level(in.mesh, in.vf, in.normals);
         const JetPlan clean = jet_plan_for_noise(0);
         const auto estimates = JetFitter(in, adj, options, clean.degree, clean.rings).noise2();
         noise2 = estimates.choice;
         const float relative = noise.median_edge > 0 ? float(std::sqrt(estimates.plan)) / noise.median_edge : 0.0f;
-        const JetPlan automatic = jet_plan_for_noise(std::min(noise.relative, relative));
+        // Only to tell clean from noisy: on noisy meshes the cubic level
+        // (within 3% of the truth) keeps choosing the rings.
+        const JetPlan automatic = jet_plan_for_noise(relative < kCleanNoise ? relative : noise.relative);
         if (plan.degree <= 0) plan.degree = automatic.degree;
         if (plan.rings <= 0) plan.rings = automatic.rings;
     }
