@@ -4,6 +4,7 @@
 #include "normal_equations.h"
 #include "rings.h"
 
+#include "geometry/parallel/double_lanes.h"
 #include "geometry/parallel/parallel.h"
 #include "geometry/scale/noise_level.h"
 #include "tensor_frames.h"
@@ -179,6 +180,71 @@ double median_of_valid(std::vector<double>& values) {
 // with k degrees of freedom to make it median-unbiased (noise_level.h).
 double chi2_median_factor(double k) { return std::pow(1.0 - 2.0 / (9.0 * k), 3.0); }
 
+// The sums a jet's normal equations are made of, up to degree Top: A^T A of
+// the monomial rows holds only the moments sum x^i y^j, i + j <= 2 Top (66
+// for degree 5), and A^T z the sums z x^i y^j, i + j <= Top: accumulating
+// those costs a third of the row-by-row products. Kept in pairs along j
+// (one SSE2 register: two sums an operation, each summed as it would be alone).
+template <int Top>
+struct RingMoments {
+    static constexpr int kPowers = 2 * Top + 1;  // x^0 .. x^(2 Top)
+    static constexpr int kPairs = (kPowers + 1) / 2;
+    static constexpr int kZPairs = (Top + 2) / 2;
+    static constexpr int kRow = 2 * kPairs, kZRow = 2 * kZPairs;
+    alignas(16) double xy[kPowers * kRow] = {};  // xy[i kRow + j]: sum x^i y^j
+    alignas(16) double z[(Top + 1) * kZRow] = {};  // z[i kZRow + j]: sum h x^i y^j
+    double zz = 0;
+
+    // One point (x, y) with height h.
+    void add(double x, double y, double h) {
+        double px[kPowers], py[2 * kPairs];
+        px[0] = py[0] = 1;
+        KAPPA_UNROLL
+        for (int i = 1; i < kPowers; ++i) px[i] = px[i - 1] * x;
+        KAPPA_UNROLL
+        for (int i = 1; i < 2 * kPairs; ++i) py[i] = py[i - 1] * y;
+        lanes::Doubles2 pairs[kPairs];
+        KAPPA_UNROLL
+        for (int p = 0; p < kPairs; ++p) pairs[p] = lanes::load_pair(&py[2 * p]);
+        KAPPA_UNROLL
+        for (int i = 0; i < kPowers; ++i) {
+            const lanes::Doubles2 a{px[i], px[i]};
+            KAPPA_UNROLL
+            for (int p = 0; 2 * p + i < kPowers; ++p)
+                lanes::store_pair(&xy[i * kRow + 2 * p], lanes::load_pair(&xy[i * kRow + 2 * p]) + a * pairs[p]);
+        }
+        KAPPA_UNROLL
+        for (int i = 0; i <= Top; ++i) {
+            const double hx = h * px[i];
+            const lanes::Doubles2 a{hx, hx};
+            KAPPA_UNROLL
+            for (int p = 0; 2 * p + i <= Top; ++p)
+                lanes::store_pair(&z[i * kZRow + 2 * p], lanes::load_pair(&z[i * kZRow + 2 * p]) + a * pairs[p]);
+        }
+        zz += h * h;
+    }
+
+    // Entry (a, b) of A^T A and entry a of A^T z (monomials numbered as kPowerX, kPowerY).
+    double ata(int a, int b) const { return xy[kOffsets.ata[a][b]]; }
+    double atz(int a) const { return z[kOffsets.atz[a]]; }
+
+private:
+    // Where those sums are in xy and z (for Top < 5, only those of its unknowns).
+    struct Offsets {
+        int ata[kMaxCoefficients][kMaxCoefficients], atz[kMaxCoefficients];
+    };
+    static constexpr Offsets offsets() {
+        Offsets o{};
+        for (int a = 0; a < kMaxCoefficients; ++a) {
+            for (int b = 0; b < kMaxCoefficients; ++b)
+                o.ata[a][b] = (kPowerX[a] + kPowerX[b]) * kRow + kPowerY[a] + kPowerY[b];
+            o.atz[a] = kPowerX[a] * kZRow + kPowerY[a];
+        }
+        return o;
+    }
+    static constexpr Offsets kOffsets = offsets();
+};
+
 // Fits the jet of vertex v over `ring` (v first) in the frame (u, w, n) and,
 // with inner >= points_needed(4), the inner candidate over ring[0, inner)
 // (the 2-ring: rings are breadth-first). Returns false when no degree >= 2
@@ -189,7 +255,6 @@ template <int Top>
 bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::dvec3& n, int degree, size_t inner,
                 bool noise_fits, JetFit& out) {
     constexpr int kUnknowns = (Top + 1) * (Top + 2) / 2;
-    constexpr int kMoments = 2 * Top + 1;
     const glm::dvec3 p0(mesh.positions[ring[0]]);
     glm::vec3 fu, fw;
     tangent_frame(glm::vec3(n), fu, fw);
@@ -202,138 +267,118 @@ bool fit_vertex(const Mesh& mesh, const std::vector<uint32_t>& ring, const glm::
     if (!(scale > 0) || !std::isfinite(scale)) return false;
     scale = std::sqrt(scale);
     const double inv = 1.0 / scale;
-    // A^T A of the monomial rows holds only the moments sum x^i y^j,
-    // i + j <= 2 degree (45 for degree 4), and A^T z the sums z x^i y^j,
-    // i + j <= degree: accumulating those costs a third of the row-by-row
-    // products. The inner candidate's are the sums over the first `inner` points.
-    double moment[kMoments][kMoments] = {}, zmoment[Top + 1][Top + 1] = {}, zz = 0;
-    double inner_moment[kMoments][kMoments], inner_zmoment[Top + 1][Top + 1], inner_zz = 0;
+    // The inner candidate's sums are those over the first `inner` points.
+    RingMoments<Top> sums, inner_sums;
     const bool with_inner = inner >= points_needed(4) && inner < ring.size();
     // Points [begin, end) into the sums (one loop without branches: it unrolls).
     const auto accumulate = [&](size_t begin, size_t end) {
         for (size_t index = begin; index < end; ++index) {
             const glm::dvec3 d = (glm::dvec3(mesh.positions[ring[index]]) - p0) * inv;
-            const double x = glm::dot(d, u), y = glm::dot(d, w), z = glm::dot(d, n);
-            double px[kMoments], py[kMoments];
-            px[0] = py[0] = 1;
-            KAPPA_UNROLL
-            for (int i = 1; i < kMoments; ++i) {
-                px[i] = px[i - 1] * x;
-                py[i] = py[i - 1] * y;
-            }
-            KAPPA_UNROLL
-            for (int i = 0; i < kMoments; ++i) {
-                KAPPA_UNROLL
-                for (int j = 0; j + i < kMoments; ++j) moment[i][j] += px[i] * py[j];
-            }
-            KAPPA_UNROLL
-            for (int i = 0; i <= Top; ++i) {
-                KAPPA_UNROLL
-                for (int j = 0; j + i <= Top; ++j) zmoment[i][j] += z * px[i] * py[j];
-            }
-            zz += z * z;
+            sums.add(glm::dot(d, u), glm::dot(d, w), glm::dot(d, n));
         }
     };
     const size_t split = with_inner ? inner : ring.size();
     accumulate(0, split);
-    if (with_inner) {
-        std::copy(&moment[0][0], &moment[0][0] + kMoments * kMoments, &inner_moment[0][0]);
-        std::copy(&zmoment[0][0], &zmoment[0][0] + (Top + 1) * (Top + 1), &inner_zmoment[0][0]);
-        inner_zz = zz;
-    }
+    if (with_inner) inner_sums = sums;
     accumulate(split, ring.size());
-    NormalEquations<kUnknowns> eq;
-    eq.set_btb(zz);
-    for (int a = 0; a < kUnknowns; ++a) {
-        eq.set_rhs(a, zmoment[kPowerX[a]][kPowerY[a]]);
-        for (int b = a; b < kUnknowns; ++b) eq.set(a, b, moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
-    }
-    constexpr int kTerms[7] = {3, 4, 5, 6, 7, 8, 9};  // kCurvatureTerms, then kDcurvTerms
-    // Stores a solution as candidate `index`.
-    const auto keep = [&](int index, const double* x, const double (&variance)[7], int terms) {
-        JetCandidate& cand = out.candidate[index];
-        std::copy(x, x + 10, cand.c);
-        cand.variance[0] = variance[0] + variance[1] + variance[2];
-        cand.variance[1] = terms > 3 ? variance[3] + variance[4] + variance[5] + variance[6] : 0.0;
-    };
-    double c[kUnknowns], variance[7] = {};
+    // One factorisation for every degree: a lower degree's fit is its
+    // leading block (normal_equations.h).
+    NestedFits<kUnknowns> fits([&](int a, int b) { return sums.ata(a, b); }, coefficient_count(degree),
+                               kPivotTolerance);
+    double atz[kUnknowns];
+    for (int a = 0; a < kUnknowns; ++a) atz[a] = sums.atz(a);
+    fits.set_rhs(atz, sums.zz);
+    double c[kUnknowns];
     int used = 0;
     for (int deg = degree; deg >= 2; --deg) {
         if (ring.size() < points_needed(deg)) continue;
-        // Variance factors only where a choice will weigh them.
-        if (eq.solve(coefficient_count(deg), c, kPivotTolerance, kTerms, with_inner ? (deg >= 3 ? 7 : 3) : 0,
-                     variance)) {
+        if (coefficient_count(deg) <= fits.rank() && fits.solve(coefficient_count(deg), c)) {
             used = deg;
             break;
         }
     }
     if (used == 0) return false;
     const int k = coefficient_count(used);
+    const double rss = fits.residual(k);
     out.u = u;
     out.w = w;
     out.n = n;
     out.scale = scale;
     out.full = used >= std::min(degree, 4);
-    out.residual = ring.size() > size_t(k) ? std::sqrt(eq.residual(c, k) / double(ring.size() - k)) * scale : 0.0;
+    out.residual = ring.size() > size_t(k) ? std::sqrt(rss / double(ring.size() - k)) * scale : 0.0;
     out.inner_noise2 = out.outer_noise2 = out.nested_noise2 = out.planned_noise2 = -1;
     if (ring.size() >= size_t(k) + 2) {
         const double dof = double(ring.size()) - k;
-        out.planned_noise2 = eq.residual(c, k) / dof / chi2_median_factor(dof) * scale * scale;
+        out.planned_noise2 = rss / dof / chi2_median_factor(dof) * scale * scale;
     }
     out.count = 0;
     out.outer = 0;
     out.has_inner = false;
-    double c4[kUnknowns], variance4[7];
-    if (with_inner && used == 5 && eq.solve(15, c4, kPivotTolerance, kTerms, 7, variance4)) {
-        keep(out.count++, c4, variance4, 7);
-        const double dof4 = double(ring.size()) - 15;
-        if (dof4 >= 2) out.outer_noise2 = eq.residual(c4, 15) / dof4 / chi2_median_factor(dof4) * scale * scale;
+    double c4[kUnknowns];
+    const bool with_quartic = with_inner && used == 5 && fits.solve(15, c4);
+    if (with_quartic) {
+        const double rss4 = fits.residual(15), dof4 = double(ring.size()) - 15;
+        if (dof4 >= 2) out.outer_noise2 = rss4 / dof4 / chi2_median_factor(dof4) * scale * scale;
         // The F test of the fifth-order terms (6 of them) against the
         // degree-5 fit's residual: where they explain no more than it,
         // degree 4 on the same ring (less noisy) is the outer fit.
-        const double dof = double(ring.size()) - k, rss = eq.residual(c, k);
-        const double f = dof >= 1 && rss > 0 ? (eq.residual(c4, 15) - rss) / 6 / (rss / dof) : 1e300;
+        const double dof = double(ring.size()) - k;
+        const double f = dof >= 1 && rss > 0 ? (rss4 - rss) / 6 / (rss / dof) : 1e300;
         if (!(f < kQuinticF)) out.outer = 1;
     }
+    // Variance factors of the curvature and C terms, only where the choice
+    // will weigh them: in the outer fit (choose_terms).
+    constexpr int kTerms[7] = {3, 4, 5, 6, 7, 8, 9};  // kCurvatureTerms, then kDcurvTerms
+    const int terms = !with_inner ? 0 : used >= 3 ? 7 : 3;
+    const int outer_model = with_quartic && out.outer == 0 ? 15 : k;
+    double variance[7][kUnknowns + 1];
+    if (terms == 7) fits.variances(kTerms, outer_model, variance);
+    if (terms == 3) fits.variances(kCurvatureTerms, outer_model, variance);
+    // Stores a solution as the next candidate, with model m's variance
+    // factors (of the first `count` terms) summed per group (0 where not computed).
+    const auto keep = [&](const double* x, const auto& factors, int count, int m, int computed) {
+        JetCandidate& cand = out.candidate[out.count++];
+        std::copy(x, x + 10, cand.c);
+        cand.variance[0] = cand.variance[1] = 0.0;
+        if (m <= computed)
+            for (int t = 0; t < count; ++t) cand.variance[t < 3 ? 0 : 1] += factors[t][m];
+    };
+    if (with_quartic) keep(c4, variance, terms, 15, outer_model);
     out.planned = out.count;
-    keep(out.count++, c, variance, used >= 3 ? 7 : 3);
-    if (!with_inner || used < 4) return true;
-
-    // The inner candidate: degree 4 on the inner points, heights less the
-    // plan's fit's terms of degree 5 (none for a degree-4 fit):
-    // A^T (z - A5 c5) and |z - A5 c5|^2 from the same moments.
-    constexpr int k4 = 15;
-    NormalEquations<kUnknowns> in_eq;
-    double zz5 = inner_zz;
-    for (int m = k4; m < k; ++m) {
-        zz5 -= 2 * c[m] * inner_zmoment[kPowerX[m]][kPowerY[m]];
-        for (int m2 = k4; m2 < k; ++m2)
-            zz5 += c[m] * c[m2] * inner_moment[kPowerX[m] + kPowerX[m2]][kPowerY[m] + kPowerY[m2]];
-    }
-    in_eq.set_btb(zz5);
-    for (int a = 0; a < k4; ++a) {
-        double rhs = inner_zmoment[kPowerX[a]][kPowerY[a]];
-        for (int m = k4; m < k; ++m) rhs -= c[m] * inner_moment[kPowerX[a] + kPowerX[m]][kPowerY[a] + kPowerY[m]];
-        in_eq.set_rhs(a, rhs);
-        for (int b = a; b < k4; ++b) in_eq.set(a, b, inner_moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
-    }
-    double ci[kUnknowns], inner_variance[7];
-    if (!in_eq.solve(k4, ci, kPivotTolerance, kTerms, 7, inner_variance)) return true;
-    keep(out.count++, ci, inner_variance, 7);
-    out.has_inner = true;
-    const double dof = double(inner) - k4;
-    if (dof >= 2) out.nested_noise2 = in_eq.residual(ci, k4) / dof / chi2_median_factor(dof) * scale * scale;
-    if (noise_fits && dof >= 2) {  // a plain degree-4 fit on the inner points
-        NormalEquations<kUnknowns> plain;
-        plain.set_btb(inner_zz);
-        for (int a = 0; a < k4; ++a) {
-            plain.set_rhs(a, inner_zmoment[kPowerX[a]][kPowerY[a]]);
-            for (int b = a; b < k4; ++b)
-                plain.set(a, b, inner_moment[kPowerX[a] + kPowerX[b]][kPowerY[a] + kPowerY[b]]);
+    keep(c, variance, terms, k, outer_model);
+    if constexpr (Top == 5) {
+        if (!with_inner || used < 4) return true;
+        // The inner candidate: degree 4 on the inner points, heights less
+        // the plan's fit's terms of degree 5 (none for a degree-4 fit):
+        // A^T (z - A5 c5) and |z - A5 c5|^2 from the same moments.
+        constexpr int k4 = 15;
+        NestedFits<k4> inner_fits([&](int a, int b) { return inner_sums.ata(a, b); }, k4, kPivotTolerance);
+        if (inner_fits.rank() < k4) return true;
+        double zz5 = inner_sums.zz;
+        for (int m = k4; m < k; ++m) {
+            zz5 -= 2 * c[m] * inner_sums.atz(m);
+            for (int m2 = k4; m2 < k; ++m2) zz5 += c[m] * c[m2] * inner_sums.ata(m, m2);
         }
-        double cp[kUnknowns];
-        if (plain.solve(k4, cp, kPivotTolerance))
-            out.inner_noise2 = plain.residual(cp, k4) / dof / chi2_median_factor(dof) * scale * scale;
+        double plain[k4], nested[k4];
+        for (int a = 0; a < k4; ++a) {
+            plain[a] = nested[a] = inner_sums.atz(a);
+            for (int m = k4; m < k; ++m) nested[a] -= c[m] * inner_sums.ata(a, m);
+        }
+        inner_fits.set_rhs(nested, zz5);
+        double ci[k4];
+        if (!inner_fits.solve(k4, ci)) return true;
+        double inner_variance[7][k4 + 1];
+        inner_fits.variances(kTerms, k4, inner_variance);
+        keep(ci, inner_variance, 7, k4, k4);
+        out.has_inner = true;
+        const double dof = double(inner) - k4;
+        if (dof >= 2) out.nested_noise2 = inner_fits.residual(k4) / dof / chi2_median_factor(dof) * scale * scale;
+        if (noise_fits && dof >= 2) {  // a plain degree-4 fit on the inner points: the same A^T A
+            inner_fits.set_rhs(plain, inner_sums.zz);
+            const double rss_plain = inner_fits.residual(k4);
+            if (std::isfinite(rss_plain))
+                out.inner_noise2 = rss_plain / dof / chi2_median_factor(dof) * scale * scale;
+        }
     }
     return true;
 }
@@ -433,35 +478,44 @@ public:
     // degree-5 fits, beta = (2/3)^6; it sees even less truncation but is
     // biased low under noise (the inner fit shares the outer's fifth-order
     // terms), so it serves only the clean plan's choose_terms.
+    // The sampled vertices' fits are kept (`fits[i]` of vertex i * step,
+    // where `fitted[i]`): where the plan is this fitter's, they are the fits.
     struct NoiseEstimates {
         double plan = 0, choice = 0;
+        size_t step = 0;
+        std::vector<JetFit> fits;
+        std::vector<uint8_t> fitted;
     };
     NoiseEstimates noise2() const {
         const size_t nv = in_.mesh.vertex_count();
         if (!with_inner_ || nv == 0) return {};
-        const size_t step = (nv + kNoiseSamples - 1) / kNoiseSamples;
+        NoiseEstimates out;
+        const size_t step = out.step = (nv + kNoiseSamples - 1) / kNoiseSamples;
         const size_t count = (nv + step - 1) / step;
-        std::vector<double> inner(count, -1.0), outer(count, -1.0), nested(count, -1.0), planned(count, -1.0);
+        out.fits.resize(count);
+        out.fitted.assign(count, 0);
         noise_fits_ = true;
         parallel_for_ranges(count, [&](size_t begin, size_t end) {
             RingCollector rings(nv);
             std::vector<uint32_t> ring;
-            JetFit f;
-            for (size_t i = begin; i < end; ++i)
-                if (fit(i * step, rings, ring, f)) {
-                    inner[i] = f.inner_noise2;
-                    outer[i] = f.outer_noise2;
-                    nested[i] = f.nested_noise2;
-                    planned[i] = f.planned_noise2;
-                }
+            for (size_t i = begin; i < end; ++i) out.fitted[i] = fit(i * step, rings, ring, out.fits[i]);
         });
         noise_fits_ = false;
+        std::vector<double> inner(count, -1.0), outer(count, -1.0), nested(count, -1.0), planned(count, -1.0);
+        for (size_t i = 0; i < count; ++i)
+            if (out.fitted[i]) {
+                inner[i] = out.fits[i].inner_noise2;
+                outer[i] = out.fits[i].outer_noise2;
+                nested[i] = out.fits[i].nested_noise2;
+                planned[i] = out.fits[i].planned_noise2;
+            }
         const auto solve = [](double r_in2, double r2, double beta) {
             const double t2 = std::max(r2 - r_in2, 0.0) / (1 - beta * beta);
             return std::max(r_in2 - beta * beta * t2, 0.0);
         };
-        return {solve(median_of_valid(inner), median_of_valid(outer), 32.0 / 243.0),
-                solve(median_of_valid(nested), median_of_valid(planned), 64.0 / 729.0)};
+        out.plan = solve(median_of_valid(inner), median_of_valid(outer), 32.0 / 243.0);
+        out.choice = solve(median_of_valid(nested), median_of_valid(planned), 64.0 / 729.0);
+        return out;
     }
 
 private:
@@ -514,22 +568,26 @@ CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& optio
     const VertexAdjacency adj = build_vertex_adjacency(in.mesh, in.vf);
     JetPlan plan{options.degree, options.rings};
     double noise2 = 0;  // the heights' noise variance for the inner choice
+    const JetPlan clean = jet_plan_for_noise(0);
+    JetFitter::NoiseEstimates estimates;
     if (plan.degree <= 0 || plan.rings <= 0) {
         // The noise level (scale/noise_level.h) reads a cubic fit's
         // truncation as noise on coarse clean meshes; the clean plan's
         // degree-4 fits on two rings see far less of it (JetFitter::noise2).
-        const NoiseLevel noise = estimate_noise_level(in.mesh, in.vf, in.normals);
-        const JetPlan clean = jet_plan_for_noise(0);
-        const auto estimates = JetFitter(in, adj, options, clean.degree, clean.rings).noise2();
+        const float median_edge = sampled_median_edge(in.mesh, in.vf);
+        estimates = JetFitter(in, adj, options, clean.degree, clean.rings).noise2();
         noise2 = estimates.choice;
-        const float relative = noise.median_edge > 0 ? float(std::sqrt(estimates.plan)) / noise.median_edge : 0.0f;
+        const float relative = median_edge > 0 ? float(std::sqrt(estimates.plan)) / median_edge : 0.0f;
         // Only to tell clean from noisy: on noisy meshes the cubic level
         // (within 3% of the truth) keeps choosing the rings.
-        const JetPlan automatic = jet_plan_for_noise(relative < kCleanNoise ? relative : noise.relative);
+        const JetPlan automatic = jet_plan_for_noise(
+            relative < kCleanNoise ? relative : estimate_noise_level(in.mesh, in.vf, in.normals).relative);
         if (plan.degree <= 0) plan.degree = automatic.degree;
         if (plan.rings <= 0) plan.rings = automatic.rings;
     }
     const JetFitter fitter(in, adj, options, plan.degree, plan.rings);
+    // The noise estimate's fits are this plan's where it is the clean one.
+    const size_t sampled = plan.degree == clean.degree && plan.rings == clean.rings ? estimates.step : 0;
     CurvatureEstimate out = empty_estimate(nv, true);
     out.normals = in.normals;
     parallel_for_ranges(nv, [&](size_t begin, size_t end) {
@@ -539,7 +597,14 @@ CurvatureEstimate estimate_jet(const EstimatorInput& in, const JetOptions& optio
         for (size_t v = begin; v < end; ++v) {
             VertexJet jet;
             const double rounding = kRoundingNoise * vertex_rounding(in.mesh.positions[v]);
-            if (!fitter.fit(v, rings, ring, fit) || !choose_jet(fit, std::max(noise2, rounding * rounding), jet)) {
+            bool fitted;
+            if (sampled > 0 && v % sampled == 0) {
+                fit = estimates.fits[v / sampled];
+                fitted = estimates.fitted[v / sampled] != 0;
+            } else {
+                fitted = fitter.fit(v, rings, ring, fit);
+            }
+            if (!fitted || !choose_jet(fit, std::max(noise2, rounding * rounding), jet)) {
                 out.flags[v] = kFlagFallback;
                 continue;
             }

@@ -5,10 +5,15 @@
 // first, so the columns are of comparable size and the equilibrated matrix
 // is well conditioned wherever the points support the model.
 //
-// Unknowns ordered by importance (e.g. monomials by degree) allow solving
-// the leading k x k block alone: the same accumulation then fits the
-// lower-degree model, which is how the fits drop their degree.
+// Unknowns ordered by importance (e.g. monomials by degree) make the fits
+// nested: the leading m x m block of A^T A is the normal matrix of the
+// model with the first m unknowns, and the leading block of a Cholesky
+// factor is that block's factor. NestedFits factors once and gives every
+// leading model from it (solution, residual, variances), which is how the
+// fits compare or drop degrees.
 #pragma once
+
+#include "geometry/parallel/double_lanes.h"
 
 #include <cmath>
 
@@ -27,86 +32,165 @@ public:
         btb_ += w * b * b;
     }
 
-    // Sets the accumulated sums directly (callers that can form A^T A
-    // faster than row by row, from moments): ata upper triangle, atb, b^T b.
-    void set(int i, int j, double ata) { ata_[i][j] = ata; }
-    void set_rhs(int i, double atb) { atb_[i] = atb; }
-    void set_btb(double btb) { btb_ = btb; }
-
     // Solves for the first k unknowns only (the others set to 0). Returns
     // false when the block is not numerically positive definite after
     // equilibration (a pivot below rel_tol), or on non-finite values.
-    bool solve(int k, double (&x)[N], double rel_tol = 1e-11) const { return solve(k, x, rel_tol, nullptr, 0, nullptr); }
-
-    // The same, and the diagonal entries (A^T A)^-1_ii of the k x k block for
-    // the `count` unknowns index[0..count): their variances for unit noise on b.
-    bool solve(int k, double (&x)[N], double rel_tol, const int* index, int count, double* variance) const {
-        double d[N], l[N][N];
-        if (!factor(k, rel_tol, d, l)) return false;
-        double y[N];
-        for (int i = 0; i < k; ++i) {
-            double s = atb_[i] * d[i];
-            for (int p = 0; p < i; ++p) s -= l[i][p] * y[p];
-            y[i] = s / l[i][i];
-        }
-        for (int i = k - 1; i >= 0; --i) {
-            double s = y[i];
-            for (int p = i + 1; p < k; ++p) s -= l[p][i] * y[p];
-            y[i] = s / l[i][i];
-        }
-        for (int i = 0; i < k; ++i)
-            if (!std::isfinite(y[i])) return false;
-        for (int i = 0; i < N; ++i) x[i] = i < k ? y[i] * d[i] : 0.0;
-        // (A^T A)^-1 = D (L L^T)^-1 D, so entry ii is d_i^2 |L^-1 e_i|^2.
-        for (int c = 0; c < count; ++c) {
-            const int a = index[c];
-            double sum = 0;
-            for (int i = a; i < k; ++i) {  // L^-1 e_a is zero above a
-                double s = i == a ? 1.0 : 0.0;
-                for (int p = a; p < i; ++p) s -= l[i][p] * y[p];
-                y[i] = s / l[i][i];
-                sum += y[i] * y[i];
-            }
-            variance[c] = sum * d[a] * d[a];
-        }
-        return true;
-    }
-
-    // The residual sum of squares of solution x (first k unknowns):
-    // b^T b - 2 x^T A^T b + x^T A^T A x.
-    double residual(const double (&x)[N], int k) const {
-        double r = btb_;
-        for (int i = 0; i < k; ++i) {
-            r -= 2 * x[i] * atb_[i];
-            for (int j = 0; j < k; ++j) r += x[i] * x[j] * (i <= j ? ata_[i][j] : ata_[j][i]);
-        }
-        return r > 0 ? r : 0;
-    }
+    bool solve(int k, double (&x)[N], double rel_tol = 1e-11) const;
 
 private:
-    // Cholesky L L^T of D A^T A D (first k unknowns), D = diag^-1/2.
-    bool factor(int k, double rel_tol, double (&d)[N], double (&l)[N][N]) const {
-        for (int i = 0; i < k; ++i) {
-            if (!(ata_[i][i] > 0) || !std::isfinite(ata_[i][i])) return false;
-            d[i] = 1.0 / std::sqrt(ata_[i][i]);
-        }
-        for (int j = 0; j < k; ++j) {  // column by column
-            double s = ata_[j][j] * d[j] * d[j];
-            for (int p = 0; p < j; ++p) s -= l[j][p] * l[j][p];
-            if (!(s > rel_tol)) return false;
-            l[j][j] = std::sqrt(s);
-            for (int i = j + 1; i < k; ++i) {
-                double t = ata_[j][i] * d[i] * d[j];
-                for (int p = 0; p < j; ++p) t -= l[i][p] * l[j][p];
-                l[i][j] = t / l[j][j];
-            }
-        }
-        return true;
-    }
-
     double ata_[N][N] = {};  // upper triangle used
     double atb_[N] = {};
     double btb_ = 0;
 };
+
+// The fits of the leading models of a NormalEquations from one Cholesky
+// factorisation U^T U = D A^T A D of its leading k x k block, and the
+// forward solve y = U^-T D A^T b: the model with the first m unknowns has
+// the solution D U_m^-1 y[0, m) and the residual sum of squares
+// b^T b - |y[0, m)|^2 (each more unknown takes its y_i^2 off).
+template <int N>
+class NestedFits {
+public:
+    // Factors the leading k x k block of A^T A, given as ata(i, j) for
+    // i <= j (a NormalEquations' sums, or a caller's own). set_rhs gives the
+    // right-hand side before any fit is read.
+    template <typename Ata>
+    NestedFits(const Ata& ata, int k, double rel_tol = 1e-11) {
+        int limit = k;
+        for (int i = 0; i < k; ++i) {
+            const double a = ata(i, i);
+            if (!(a > 0) || !std::isfinite(a)) {
+                limit = i;
+                break;
+            }
+            d_[i] = 1.0 / std::sqrt(a);
+        }
+        for (int j = 0; j < N; ++j) {
+            for (int i = j / 2 * 2; i < kPadded; ++i) u_[j][i] = 0.0;
+            if (j < limit)
+                for (int i = j; i < limit; ++i) u_[j][i] = ata(j, i) * d_[i] * d_[j];
+        }
+        // Right-looking: row j of U, then its outer product off the rest of
+        // the upper triangle, by pairs of whole rows (entries below the
+        // diagonal or past the block take values nothing reads). Every entry
+        // gets the same operations in the same order as in a column-by-column
+        // Cholesky.
+        rank_ = limit;
+        for (int j = 0; j < limit; ++j) {
+            const double pivot = u_[j][j];
+            if (!(pivot > rel_tol)) {
+                rank_ = j;
+                break;
+            }
+            const double ujj = std::sqrt(pivot);
+            u_[j][j] = ujj;
+            for (int i = j + 1; i < limit; ++i) u_[j][i] /= ujj;
+            for (int m = j + 1; m < limit;) {  // two rows at a time where they start at one pair
+                if (m % 2 == 0 && m + 1 < limit) {
+                    subtract_scaled<2>(&u_[m], {u_[j][m], u_[j][m + 1]}, u_[j], m);
+                    m += 2;
+                } else {
+                    subtract_scaled<1>(&u_[m], {u_[j][m]}, u_[j], m);
+                    ++m;
+                }
+            }
+        }
+    }
+
+    // The leading models that are numerically positive definite: 0 to k.
+    int rank() const { return rank_; }
+
+    // The right-hand side A^T b and b^T b (again for another one: the same A^T A).
+    void set_rhs(const double (&atb)[N], double btb) {
+        btb_ = btb;
+        double r[kPadded] = {};
+        for (int i = 0; i < rank_; ++i) r[i] = atb[i] * d_[i];
+        forward(0, rank_, r, y_);
+    }
+
+    // The model with the first m <= rank() unknowns (the others set to 0);
+    // false on non-finite values.
+    bool solve(int m, double (&x)[N]) const {
+        double z[N];
+        for (int i = m - 1; i >= 0; --i) {
+            double s = y_[i];
+            for (int p = i + 1; p < m; ++p) s -= u_[i][p] * z[p];
+            z[i] = s / u_[i][i];
+        }
+        for (int i = 0; i < m; ++i)
+            if (!std::isfinite(z[i])) return false;
+        for (int i = 0; i < N; ++i) x[i] = i < m ? z[i] * d_[i] : 0.0;
+        return true;
+    }
+
+    // Its residual sum of squares.
+    double residual(int m) const {
+        double r = btb_;
+        for (int i = 0; i < m; ++i) r -= y_[i] * y_[i];
+        return r > 0 ? r : 0;
+    }
+
+    // The variance factors (A^T A)^-1_aa (unit noise on b) of the unknowns
+    // a = terms[0] < terms[1] < ... in the models up to the first m <= rank()
+    // unknowns: v[c][m'] for unknown terms[c], terms[c] < m' <= m. (A^T A)^-1
+    // = D U^-1 U^-T D, so entry aa of model m' is d_a^2 |U^-T e_a|^2 over
+    // [a, m') (U^-T e_a is zero above a). All T solves at once (the later
+    // ones start with zeros, which leave them as they are).
+    template <int T>
+    void variances(const int (&terms)[T], int m, double (*v)[N + 1]) const {
+        double r[T][kPadded] = {}, sum[T] = {};
+        for (int c = 0; c < T; ++c) r[c][terms[c]] = 1.0;
+        for (int p = terms[0]; p < m; ++p) {
+            double z[T];
+            for (int c = 0; c < T; ++c) {
+                z[c] = r[c][p] / u_[p][p];
+                if (p < terms[c]) continue;
+                sum[c] += z[c] * z[c];
+                v[c][p + 1] = sum[c] * d_[terms[c]] * d_[terms[c]];
+            }
+            subtract_scaled<T>(r, z, u_[p], p + 1);
+        }
+    }
+
+private:
+    static constexpr int kPadded = (N + 1) / 2 * 2;  // rows of U padded to whole pairs
+
+    // U^T z = r on [first, last) (r zero above first), r overwritten (by
+    // pairs, as the factorisation).
+    void forward(int first, int last, double (&r)[kPadded], double (&z)[N]) const {
+        for (int p = first; p < last; ++p) {
+            z[p] = r[p] / u_[p][p];
+            subtract_scaled<1>(&r, {z[p]}, u_[p], p + 1);
+        }
+    }
+
+    // rows[c][i] -= a[c] * other[i] for the R rows, from i = from (the pair
+    // that holds it) to the end, by pairs: in each entry the one operation a
+    // scalar loop does.
+    template <int R>
+    static void subtract_scaled(double (*rows)[kPadded], const double (&a)[R], const double (&other)[kPadded],
+                                int from) {
+        lanes::Doubles2 a2[R];
+        for (int c = 0; c < R; ++c) a2[c] = lanes::Doubles2{a[c], a[c]};
+        for (int i = from / 2 * 2; i < kPadded; i += 2) {
+            const lanes::Doubles2 o = lanes::load_pair(&other[i]);
+            for (int c = 0; c < R; ++c) lanes::store_pair(&rows[c][i], lanes::load_pair(&rows[c][i]) - a2[c] * o);
+        }
+    }
+
+    int rank_ = 0;
+    double d_[N];
+    alignas(16) double u_[N][kPadded];  // upper triangle: U
+    double y_[N];
+    double btb_ = 0;
+};
+
+template <int N>
+bool NormalEquations<N>::solve(int k, double (&x)[N], double rel_tol) const {
+    NestedFits<N> fits([this](int i, int j) { return ata_[i][j]; }, k, rel_tol);
+    if (fits.rank() < k) return false;
+    fits.set_rhs(atb_, btb_);
+    return fits.solve(k, x);
+}
 
 }  // namespace kappa

@@ -77,6 +77,14 @@ template <typename D> KAPPA_LANES_INLINE D sign_of(D x) {
     }
 }
 
+// Two doubles from and to memory (any alignment).
+KAPPA_LANES_INLINE Doubles2 load_pair(const double* p) {
+    Doubles2 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+KAPPA_LANES_INLINE void store_pair(double* p, Doubles2 v) { std::memcpy(p, &v, sizeof v); }
+
 // A 3-vector of D.
 template <typename D> struct Vec3 {
     D x, y, z;

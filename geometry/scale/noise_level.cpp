@@ -142,6 +142,26 @@ double median_of(std::vector<double>& values) {
 
 }  // namespace
 
+float sampled_median_edge(const Mesh& mesh, const VertexFaces& vf) {
+    const size_t nv = mesh.vertex_count();
+    if (nv == 0) return 0;
+    const size_t stride = (nv + kTargetSamples - 1) / kTargetSamples;
+    const size_t ns = (nv + stride - 1) / stride;
+    // Over the edges from each sampled vertex to its neighbours.
+    std::vector<double> lengths;
+    std::vector<uint32_t> ring;
+    for (size_t s = 0; s < ns; ++s) {
+        const uint32_t v = uint32_t(s * stride);
+        ring.clear();
+        append_neighbours(mesh, vf, v, ring);
+        std::sort(ring.begin(), ring.end());
+        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+        for (uint32_t w : ring)
+            if (w != v) lengths.push_back(glm::length(glm::dvec3(mesh.positions[w]) - glm::dvec3(mesh.positions[v])));
+    }
+    return float(median_of(lengths));
+}
+
 NoiseLevel estimate_noise_level(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& normals) {
     NoiseLevel out;
     const size_t nv = mesh.vertex_count();
@@ -157,19 +177,7 @@ NoiseLevel estimate_noise_level(const Mesh& mesh, const VertexFaces& vf, const s
         }
     }, 256);
 
-    // Median edge: over the edges from each sampled vertex to its neighbours.
-    std::vector<double> lengths;
-    std::vector<uint32_t> ring;
-    for (size_t s = 0; s < ns; ++s) {
-        const uint32_t v = uint32_t(s * stride);
-        ring.clear();
-        append_neighbours(mesh, vf, v, ring);
-        std::sort(ring.begin(), ring.end());
-        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-        for (uint32_t w : ring)
-            if (w != v) lengths.push_back(glm::length(glm::dvec3(mesh.positions[w]) - glm::dvec3(mesh.positions[v])));
-    }
-    out.median_edge = float(median_of(lengths));
+    out.median_edge = sampled_median_edge(mesh, vf);
 
     std::vector<double> valid;
     valid.reserve(ns);

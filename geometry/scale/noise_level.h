@@ -51,4 +51,7 @@ struct NoiseLevel {
 // orientation; zero vectors mark vertices to skip), one per vertex.
 NoiseLevel estimate_noise_level(const Mesh& mesh, const VertexFaces& vf, const std::vector<glm::vec3>& normals);
 
+// Its median_edge alone (no fits).
+float sampled_median_edge(const Mesh& mesh, const VertexFaces& vf);
+
 }  // namespace kappa
