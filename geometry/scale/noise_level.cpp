@@ -1,6 +1,7 @@
 #include "noise_level.h"
 
 #include "geometry/parallel/parallel.h"
+#include "geometry/curvature/normal_equations.h"
 #include "geometry/curvature/tensor_frames.h"
 
 #include <glm/geometric.hpp>
@@ -23,39 +24,6 @@ void append_neighbours(const Mesh& mesh, const VertexFaces& vf, uint32_t v, std:
         out.push_back(f[(c % 3 + 1) % 3]);
         out.push_back(f[(c % 3 + 2) % 3]);
     }
-}
-
-// Cholesky factorisation and solve of the SPD system A x = b in place
-// (A row-major, lower triangle used). False when a pivot is not above
-// rel_tol times the largest diagonal entry.
-bool cholesky_solve(double (&A)[kCoefficients][kCoefficients], double (&b)[kCoefficients], double rel_tol) {
-    constexpr int N = kCoefficients;
-    double scale = 0;
-    for (int i = 0; i < N; ++i) scale = std::max(scale, A[i][i]);
-    if (!(scale > 0 && scale < INFINITY)) return false;
-    for (int j = 0; j < N; ++j) {
-        double d = A[j][j];
-        for (int k = 0; k < j; ++k) d -= A[j][k] * A[j][k];
-        if (!(d > rel_tol * scale)) return false;
-        const double l = std::sqrt(d);
-        A[j][j] = l;
-        for (int i = j + 1; i < N; ++i) {
-            double s = A[i][j];
-            for (int k = 0; k < j; ++k) s -= A[i][k] * A[j][k];
-            A[i][j] = s / l;
-        }
-    }
-    for (int i = 0; i < N; ++i) {  // L y = b
-        double s = b[i];
-        for (int k = 0; k < i; ++k) s -= A[i][k] * b[k];
-        b[i] = s / A[i][i];
-    }
-    for (int i = N - 1; i >= 0; --i) {  // L^T x = y
-        double s = b[i];
-        for (int k = i + 1; k < N; ++k) s -= A[k][i] * b[k];
-        b[i] = s / A[i][i];
-    }
-    return true;
 }
 
 void monomials(double x, double y, double (&m)[kCoefficients]) {
@@ -102,20 +70,15 @@ double vertex_noise_variance(const Mesh& mesh, const VertexFaces& vf, const glm:
     if (!(r2 > 0)) return -1;
     const double inv_scale = 1.0 / std::sqrt(r2 / n);
 
-    double A[kCoefficients][kCoefficients] = {}, b[kCoefficients] = {};
+    NormalEquations<kCoefficients> eq;
     double m[kCoefficients];
     for (uint32_t j : ring2) {
         const glm::dvec3 d = glm::dvec3(mesh.positions[j]) - p0;
         monomials(glm::dot(d, du) * inv_scale, glm::dot(d, dw) * inv_scale, m);
-        const double z = glm::dot(d, dn);
-        for (int r = 0; r < kCoefficients; ++r) {
-            for (int c = 0; c <= r; ++c) A[r][c] += m[r] * m[c];
-            b[r] += m[r] * z;
-        }
+        eq.add(m, glm::dot(d, dn));
     }
     double coef[kCoefficients];
-    std::copy(b, b + kCoefficients, coef);
-    if (!cholesky_solve(A, coef, 1e-9)) return -1;
+    if (!eq.solve(kCoefficients, coef, 1e-9)) return -1;
     // Residuals computed explicitly: z.z - b.x would lose the digits of a
     // tiny noise against the surface's height variation.
     double rss = 0;
