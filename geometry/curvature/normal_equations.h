@@ -15,6 +15,7 @@
 
 #include "geometry/parallel/double_lanes.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kappa {
@@ -65,16 +66,16 @@ public:
             }
             d_[i] = 1.0 / std::sqrt(a);
         }
-        for (int j = 0; j < N; ++j) {
-            for (int i = j / 2 * 2; i < kPadded; ++i) u_[j][i] = 0.0;
+        for (int j = 0; j < N; ++j) {  // the updates below start up to 3 entries left of the diagonal
+            for (int i = std::max(j / 2 * 2 - 2, 0); i < kPadded; ++i) u_[j][i] = 0.0;
             if (j < limit)
                 for (int i = j; i < limit; ++i) u_[j][i] = ata(j, i) * d_[i] * d_[j];
         }
         // Right-looking: row j of U, then its outer product off the rest of
-        // the upper triangle, by pairs of whole rows (entries below the
-        // diagonal or past the block take values nothing reads). Every entry
-        // gets the same operations in the same order as in a column-by-column
-        // Cholesky.
+        // the upper triangle, by pairs of entries to the ends of the rows,
+        // up to four rows at a time (entries below the diagonal or past the
+        // block take values nothing reads). Every entry of U gets the same
+        // operations in the same order as in a column-by-column Cholesky.
         rank_ = limit;
         for (int j = 0; j < limit; ++j) {
             const double pivot = u_[j][j];
@@ -85,8 +86,11 @@ public:
             const double ujj = std::sqrt(pivot);
             u_[j][j] = ujj;
             for (int i = j + 1; i < limit; ++i) u_[j][i] /= ujj;
-            for (int m = j + 1; m < limit;) {  // two rows at a time where they start at one pair
-                if (m % 2 == 0 && m + 1 < limit) {
+            for (int m = j + 1; m < limit;) {  // four or two rows at a time from the start of a pair
+                if (m % 2 == 0 && m + 3 < limit) {
+                    subtract_scaled<4>(&u_[m], {u_[j][m], u_[j][m + 1], u_[j][m + 2], u_[j][m + 3]}, u_[j], m);
+                    m += 4;
+                } else if (m % 2 == 0 && m + 1 < limit) {
                     subtract_scaled<2>(&u_[m], {u_[j][m], u_[j][m + 1]}, u_[j], m);
                     m += 2;
                 } else {
