@@ -7,11 +7,13 @@
 
 #include "geometry/curvature/jet.h"
 #include "geometry/curvature/normal_fit.h"
+#include "geometry/parallel/parallel.h"
 #include "geometry/surface_analysis.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstring>
 
 using namespace kappa;
 using test::AnalyticMesh;
@@ -241,5 +243,28 @@ TEST_CASE("On clean uniform meshes the jet beats a degree-4 2-ring jet (CGAL's c
                     << fixed.curvature << " / " << fixed.dcurv);
         CHECK(jet.curvature < c.curvature * fixed.curvature);
         CHECK(jet.dcurv < c.dcurv * fixed.dcurv);
+    }
+}
+
+TEST_CASE("The jet gives the same bits whatever the thread count, clean and noisy", "[estimators][jet][determinism]") {
+    // Clean: the noise sample's fits serve as the plan's own fits for the
+    // sampled vertices. Noisy (2% of an edge): the first look at the sample
+    // settles the plan. 20k vertices: several chunks per thread.
+    for (const double noise : {0.0, 0.02}) {
+        const AnalyticMesh a = test::with_normal_noise(test::analytic_torus(1, 0.4, 200, 100, 0.3, 7), noise, 8);
+        const test::EstimatorInputs in = test::estimator_inputs(a.mesh);
+        INFO("noise " << noise);
+        set_thread_count(1);
+        const CurvatureEstimate one = estimate_jet(in.of(a.mesh));
+        for (unsigned threads : {2u, 5u}) {
+            set_thread_count(threads);
+            const CurvatureEstimate other = estimate_jet(in.of(a.mesh));
+            CHECK(std::memcmp(one.normals.data(), other.normals.data(), one.normals.size() * sizeof(glm::vec3)) == 0);
+            CHECK(std::memcmp(one.tensors.tensor.data(), other.tensors.tensor.data(),
+                              one.tensors.tensor.size() * sizeof(Tensor2)) == 0);
+            CHECK(std::memcmp(one.dcurv_uv.data(), other.dcurv_uv.data(), one.dcurv_uv.size() * sizeof(glm::vec4)) == 0);
+            CHECK(one.flags == other.flags);
+        }
+        set_thread_count(0);
     }
 }
