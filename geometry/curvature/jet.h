@@ -67,6 +67,14 @@
 // torus of 50 x 25) keep the noisy plan, 2.8 to 5.7 times CGAL's
 // curvature error (8 to 11 before).
 //
+// Cost: the fits share their work. One Cholesky factor of the whole ring's
+// degree-5 normal equations gives the degree-4 fit too (its leading block),
+// every residual (normal_equations.h, NestedFits) and the variance factors
+// of both; the 2-ring's factor serves its two right-hand sides; the
+// sampled vertices' fits are the plan's own where it is the clean one; the
+// cubic noise level is computed only where the sample reads noisy, and a
+// first look at an eighth of the sample settles clearly noisy meshes.
+//
 // Where the neighbourhood is too small for the degree (fewer than unknowns +
 // 3 points: boundaries, small components) it is grown by one ring, up to
 // `max_rings`; if that is not enough, or the points are degenerate (the

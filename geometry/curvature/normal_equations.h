@@ -127,7 +127,7 @@ public:
         return true;
     }
 
-    // Its residual sum of squares.
+    // The residual sum of squares of the model with the first m <= rank() unknowns.
     double residual(int m) const {
         double r = btb_;
         for (int i = 0; i < m; ++i) r -= y_[i] * y_[i];
