@@ -66,11 +66,14 @@ public:
             }
             d_[i] = 1.0 / std::sqrt(a);
         }
-        for (int j = 0; j < N; ++j) {  // the updates below start up to 3 entries left of the diagonal
-            for (int i = std::max(j / 2 * 2 - 2, 0); i < kPadded; ++i) u_[j][i] = 0.0;
-            if (j < limit)
-                for (int i = j; i < limit; ++i) u_[j][i] = ata(j, i) * d_[i] * d_[j];
-        }
+        // Entries are written by pairs wherever they are read by pairs (a
+        // pair read from two single writes waits for them to reach the cache:
+        // 5% of the jet's time). The updates below start up to 3 entries left
+        // of the diagonal.
+        const auto entry = [&](int j, int i) { return i >= j && i < limit ? ata(j, i) * d_[i] * d_[j] : 0.0; };
+        for (int j = 0; j < N; ++j)
+            for (int i = std::max(j / 2 * 2 - 2, 0); i < kPadded; i += 2)
+                lanes::store_pair(&u_[j][i], lanes::Doubles2{entry(j, i), entry(j, i + 1)});
         // Right-looking: row j of U, then its outer product off the rest of
         // the upper triangle, by pairs of entries to the ends of the rows,
         // up to four rows at a time (entries below the diagonal or past the
@@ -84,8 +87,15 @@ public:
                 break;
             }
             const double ujj = std::sqrt(pivot);
-            u_[j][j] = ujj;
-            for (int i = j + 1; i < limit; ++i) u_[j][i] /= ujj;
+            const lanes::Doubles2 ujj2{ujj, ujj};
+            int i = j + 1;
+            if (j % 2 == 0) {  // the pair (j, j + 1): row j + 1's update reads it
+                lanes::store_pair(&u_[j][j], lanes::Doubles2{ujj, u_[j][j + 1] / ujj});
+                ++i;
+            } else {
+                u_[j][j] = ujj;
+            }
+            for (; i < limit; i += 2) lanes::store_pair(&u_[j][i], lanes::load_pair(&u_[j][i]) / ujj2);
             for (int m = j + 1; m < limit;) {  // four or two rows at a time from the start of a pair
                 if (m % 2 == 0 && m + 3 < limit) {
                     subtract_scaled<4>(&u_[m], {u_[j][m], u_[j][m + 1], u_[j][m + 2], u_[j][m + 3]}, u_[j], m);
@@ -107,8 +117,9 @@ public:
     // The right-hand side A^T b and b^T b (again for another one: the same A^T A).
     void set_rhs(const double (&atb)[N], double btb) {
         btb_ = btb;
-        double r[kPadded] = {};
-        for (int i = 0; i < rank_; ++i) r[i] = atb[i] * d_[i];
+        double r[kPadded];
+        const auto entry = [&](int i) { return i < rank_ ? atb[i] * d_[i] : 0.0; };
+        for (int i = 0; i < kPadded; i += 2) lanes::store_pair(&r[i], lanes::Doubles2{entry(i), entry(i + 1)});
         forward(0, rank_, r, y_);
     }
 
@@ -142,8 +153,10 @@ public:
     // ones start with zeros, which leave them as they are).
     template <int T>
     void variances(const int (&terms)[T], int m, double (*v)[N + 1]) const {
-        double r[T][kPadded] = {}, sum[T] = {};
-        for (int c = 0; c < T; ++c) r[c][terms[c]] = 1.0;
+        double r[T][kPadded], sum[T] = {};
+        for (int c = 0; c < T; ++c)
+            for (int i = 0; i < kPadded; i += 2)
+                lanes::store_pair(&r[c][i], lanes::Doubles2{i == terms[c] ? 1.0 : 0.0, i + 1 == terms[c] ? 1.0 : 0.0});
         for (int p = terms[0]; p < m; ++p) {
             double z[T];
             for (int c = 0; c < T; ++c) {
