@@ -97,7 +97,7 @@ public:
             }
             for (; i < limit; i += 2) lanes::store_pair(&u_[j][i], lanes::load_pair(&u_[j][i]) / ujj2);
             for (int m = j + 1; m < limit;) {  // four or two rows at a time from the start of a pair
-                if (m % 2 == 0 && m + 3 < limit) {
+                if (N >= 4 && m % 2 == 0 && m + 3 < limit) {  // N >= 4: no rows past the end to warn of
                     subtract_scaled<4>(&u_[m], {u_[j][m], u_[j][m + 1], u_[j][m + 2], u_[j][m + 3]}, u_[j], m);
                     m += 4;
                 } else if (m % 2 == 0 && m + 1 < limit) {
@@ -118,7 +118,7 @@ public:
     void set_rhs(const double (&atb)[N], double btb) {
         btb_ = btb;
         double r[kPadded];
-        const auto entry = [&](int i) { return i < rank_ ? atb[i] * d_[i] : 0.0; };
+        const auto entry = [&](int i) { return i < rank_ ? atb[std::min(i, N - 1)] * d_[std::min(i, N - 1)] : 0.0; };
         for (int i = 0; i < kPadded; i += 2) lanes::store_pair(&r[i], lanes::Doubles2{entry(i), entry(i + 1)});
         forward(0, rank_, r, y_);
     }
