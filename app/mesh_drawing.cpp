@@ -27,18 +27,17 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
                          const ProgressFn& progress)
     : settings_(settings), smoothing_(smoothing), progress_(progress) {
-    const DrawingPreparation prepared = prepare_for_drawing(input);
-    units_ = prepared.units;
-    turned_ = prepared.turned_inside_out;
-    // Sharp edges split the mesh: each side gets its own normals and curvature.
-    // The vertex-face rows serve the creases, then (made the split mesh's)
+    // The vertex-face rows serve the preparation (the creases), then (made the split mesh's)
     // the fields and the scale space: built once, timed as the fields' adjacency.
     const auto t_adjacency = std::chrono::steady_clock::now();
     adjacency_ = build_vertex_faces(input);
     times_.adjacency = seconds_since(t_adjacency);
-    ResolvedCreases creases = resolve_creases(input, adjacency_, settings.crease_angle);
-    crease_angle_ = creases.angle;
-    drawn_ = split_at_creases(std::move(input), creases.creases, &adjacency_);
+    DrawingPreparation prepared = prepare_for_drawing(input, adjacency_, settings.crease_angle);
+    units_ = prepared.units;
+    turned_ = prepared.turned_inside_out;
+    crease_angle_ = prepared.creases.angle;
+    // Sharp edges split the mesh: each side gets its own normals and curvature.
+    drawn_ = split_at_creases(std::move(input), prepared.creases.creases, &adjacency_);
     bounds_ = render::bounding_sphere(drawn_.mesh);
     // With detail, the per-vertex curvature is needed only where a view
     // blends in the raw estimate (zoomed in on a coarse mesh): computed then.
@@ -189,7 +188,7 @@ render::Camera make_camera(const CameraOptions& options, MeshDrawing& drawing, g
     const bool default_view = options.uses_default_view();
     const Mesh& surface = default_view ? drawing.view_surface() : drawing.mesh();
     return make_camera(options, surface, drawing.bounds(), size, orbit_center, drawing.units(), up_axis,
-                       default_view && drawing.view_surface_denoised());
+                       default_view && drawing.view_surface_denoised(), &drawing.adjacency());
 }
 
 }  // namespace kappa::app

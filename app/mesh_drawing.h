@@ -43,6 +43,8 @@ public:
     const Mesh& mesh() const { return drawn_.mesh; }
     const render::BoundingSphere& bounds() const { return bounds_; }
     const DrawingUnits& units() const { return units_; }
+    // mesh()'s vertex-face rows; view_surface() has the same faces.
+    const VertexFaces& adjacency() const { return adjacency_; }
     // Whether the input was inside out (geometry/mesh/orientation.h) and is drawn with its faces turned.
     bool turned_inside_out() const { return turned_; }
     size_t crease_count() const { return drawn_.creases.size(); }

@@ -90,7 +90,7 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b) {
 
 render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
                            glm::ivec2 size, glm::vec3* orbit_center, const DrawingUnits& units,
-                           glm::vec3* up_axis, bool denoised) {
+                           glm::vec3* up_axis, bool denoised, const VertexFaces* vf) {
     CameraOptions c = options;
     c.eye = units.to_drawing(c.eye), c.target = units.to_drawing(c.target);
     const float aspect = float(size.x) / float(size.y);
@@ -108,7 +108,7 @@ render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const
     if (!c.has_eye) {
         const std::optional<glm::vec3> up = c.has_up ? std::optional<glm::vec3>(c.up) : c.file_up;
         if (!c.view) {
-            const DefaultView v = default_view_as_read(mesh, up, denoised);
+            const DefaultView v = default_view_as_read(mesh, up, denoised, vf);
             if (up_axis) *up_axis = v.up;
             camera = render::Camera::framing(bounds, c.fov, aspect, v.eye, v.up);  // = Camera::default_view
         } else {

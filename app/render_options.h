@@ -69,9 +69,10 @@ bool same_smoothing(const SmoothingOptions& a, const SmoothingOptions& b);
 // (MeshDrawing::view_surface: denoised when noisy; denoised says so, for
 // default_view.h's choose_up). mesh, bounds and the result are in drawing
 // units (geometry/mesh/drawing_units.h: MeshDrawing::units()); --eye, --target
-// and --xf, in model units, are converted.
+// and --xf, in model units, are converted. vf: mesh's vertex-face rows, when
+// the caller has them (the default view is then quicker on big meshes).
 render::Camera make_camera(const CameraOptions& options, const Mesh& mesh, const render::BoundingSphere& bounds,
                            glm::ivec2 size, glm::vec3* orbit_center = nullptr, const DrawingUnits& units = {},
-                           glm::vec3* up_axis = nullptr, bool denoised = false);
+                           glm::vec3* up_axis = nullptr, bool denoised = false, const VertexFaces* vf = nullptr);
 
 }  // namespace kappa::app

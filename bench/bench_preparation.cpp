@@ -1,8 +1,11 @@
 // What drawing a mesh does between reading it and its fields (`kappa render`'s
-// "load" less the read, app/mesh_drawing.cpp): drawing units, the inside-out
-// test, the crease angle (auto), the creases, the split along them. Each stage
-// timed alone on the loaded mesh, then all of them in order as MeshDrawing
-// runs them, next to the read they should not outweigh (issue 30, item 3).
+// "load" less the read, app/mesh_drawing.cpp and app/mesh_source.cpp), and the
+// default view it then takes (app/render_options.cpp, make_camera): drawing
+// units, the crease angle (auto: a sampled vote), one pass over the faces
+// (the inside-out volumes and the crease candidates), the creases around the
+// candidates, the split along them. Each stage timed alone on the loaded
+// mesh, then all of them in order as MeshDrawing runs them, next to the read
+// they should not outweigh (issue 30, item 3), and the passes they replace.
 // Prints every run and the median.
 //
 //   bench_preparation [MESH] [RUNS]   (default: ../shared/meshes/bunny-1M.ply next to the repo, 5 runs)
@@ -10,11 +13,15 @@
 #include "time_it.h"
 
 #include "geometry/io/mesh_io.h"
+#include "geometry/mesh/crease_candidates.h"
+#include "geometry/mesh/crease_vote.h"
 #include "geometry/mesh/creases.h"
 #include "geometry/mesh/drawing_units.h"
 #include "geometry/mesh/edge_bends.h"
+#include "geometry/mesh/face_survey.h"
 #include "geometry/mesh/orientation.h"
 #include "geometry/parallel/parallel.h"
+#include "geometry/view/default_view.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -30,32 +37,51 @@ int main(int argc, char** argv) {
         argc > 1 ? argv[1] : (source_dir / ".." / "shared" / "meshes" / "bunny-1M.ply").string();
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
     const kappa::Mesh mesh = kappa::bench::load_or_exit(path);
-    const float angle = kappa::auto_crease_angle(mesh);
-    std::printf("%s: %zu vertices, %zu faces, %u threads; auto crease angle %g, %zu creases\n", path.c_str(),
-                mesh.vertex_count(), mesh.face_count(), kappa::thread_count(), angle,
-                kappa::find_creases(mesh, angle).size());
+    const kappa::VertexFaces vf = kappa::build_vertex_faces(mesh);
+    const kappa::ResolvedCreases resolved = kappa::resolve_creases(mesh, vf, -1);
+    const float angle = resolved.angle;
+    const kappa::CreaseVote vote = kappa::sampled_crease_vote(mesh, vf);
+    const std::vector<uint32_t> candidates = kappa::crease_candidates(mesh, kappa::kAutoCreaseAngle);
+    std::printf("%s: %zu vertices, %zu faces, %u threads; auto crease angle %g (sampled vote: %s), %zu creases; "
+                "%zu crease candidates at %g degrees\n",
+                path.c_str(), mesh.vertex_count(), mesh.face_count(), kappa::thread_count(), angle,
+                vote == kappa::CreaseVote::On ? "on" : vote == kappa::CreaseVote::Off ? "off" : "unclear",
+                resolved.creases.size(), candidates.size(), kappa::kAutoCreaseAngle);
 
     time_it("read", runs, [&] { kappa::load_mesh(path); });
     time_it("drawing units", runs, [&] { kappa::drawing_units(mesh); });
-    time_it("inside out", runs, [&] { kappa::is_inside_out(mesh); });
-    time_it("  vertex faces", runs, [&] { kappa::build_vertex_faces(mesh); });
-    time_it("  face normals", runs, [&] { kappa::face_normals(mesh); });
-    const kappa::VertexFaces vf = kappa::build_vertex_faces(mesh);
-    time_it("  edge bends (given vf)", runs, [&] { kappa::measure_edge_bends(mesh, vf, angle); });
-    time_it("auto crease angle", runs, [&] { kappa::auto_crease_angle(mesh); });
-    time_it("find creases", runs, [&] { kappa::find_creases(mesh, angle); });
-    time_it("auto angle + creases", runs, [&] { kappa::resolve_creases(mesh, -1); });
-    const auto creases = kappa::find_creases(mesh, angle);
+    time_it("vertex faces (adjacency)", runs, [&] { kappa::build_vertex_faces(mesh); });
+    time_it("sampled crease vote", runs, [&] { kappa::sampled_crease_vote(mesh, vf); });
+    time_it("face pass: volumes", runs, [&] { kappa::survey_faces(mesh, 0); });
+    time_it("face pass: + candidates", runs, [&] { kappa::survey_faces(mesh, kappa::kAutoCreaseAngle); });
+    time_it("creases around them", runs,
+            [&] { kappa::creases_around(mesh, vf, kappa::kAutoCreaseAngle, candidates); });
+    time_it("  whole edge pass (before)", runs, [&] { kappa::measure_edge_bends(mesh, vf, kappa::kAutoCreaseAngle); });
     time_it("mesh copy", runs, [&] { kappa::Mesh copy = mesh; });
-    time_it("copy + split", runs, [&] { kappa::split_at_creases(mesh, creases); });
-    // As app/mesh_drawing.cpp: the copy stands for the mesh just read.
-    time_it("copy + all of them", runs, [&] {
+    time_it("copy + split (rows given)", runs, [&] {
+        kappa::VertexFaces rows = vf;
+        kappa::split_at_creases(mesh, resolved.creases, &rows);
+    });
+    time_it("  rows copy", runs, [&] { kappa::VertexFaces rows = vf; });
+    time_it("default view (rows given)", runs, [&] { kappa::default_view_as_read(mesh, std::nullopt, false, &vf); });
+    time_it("  default view (before)", runs, [&] { kappa::default_view_as_read(mesh); });
+    // As app/mesh_source.cpp's prepare_for_drawing and app/mesh_drawing.cpp: the copies stand for the
+    // mesh just read and its rows just built.
+    time_it("copies + all of them", runs, [&] {
         kappa::Mesh m = mesh;
+        kappa::VertexFaces rows = vf;
         const kappa::DrawingUnits units = kappa::drawing_units(m);
         kappa::to_drawing_units(m, units);
-        if (kappa::is_inside_out(m)) kappa::flip_faces(m);
-        const kappa::ResolvedCreases found = kappa::resolve_creases(m, -1);  // auto
-        kappa::split_at_creases(std::move(m), found.creases);
+        const std::optional<float> a = kappa::sampled_crease_angle(m, rows, -1);  // auto
+        const kappa::FaceSurvey survey = kappa::survey_faces(m, a.value_or(0.0f));
+        if (kappa::is_inside_out(survey.volumes)) kappa::flip_faces(m, &rows);
+        const std::vector<glm::uvec2> creases = a ? kappa::creases_around(m, rows, *a, survey.crease_candidates)
+                                                  : kappa::resolve_creases(m, rows, -1).creases;
+        kappa::split_at_creases(std::move(m), creases, &rows);
+    });
+    time_it("  copies alone", runs, [&] {
+        kappa::Mesh m = mesh;
+        kappa::VertexFaces rows = vf;
     });
     return 0;
 }

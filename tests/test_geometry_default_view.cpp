@@ -108,3 +108,23 @@ TEST_CASE("The front rule leaves models without a front alone", "[view]") {
     CHECK(a.elevation == b.elevation);
     CHECK(std::fabs(std::fabs(da.z) - std::fabs(db.z)) < 1e-5f);
 }
+
+TEST_CASE("The default view with the vertex-face rows given is the same, to the last bit", "[view]") {
+    Mesh zup = load_mesh(test::shared_mesh("spot.obj"));
+    for (glm::vec3& p : zup.positions) p = {p.x, -p.z, p.y};  // stood on +z
+    std::vector<std::pair<const char*, Mesh>> meshes;
+    for (const char* name : {"bunny.ply", "fandisk.obj", "spot.obj", "dragon-50k.ply"})
+        meshes.push_back({name, load_mesh(test::shared_mesh(name))});
+    meshes.push_back({"spot, z up", zup});
+    for (const auto& [name, mesh] : meshes) {
+        INFO(name);
+        const VertexFaces vf = build_vertex_faces(mesh);
+        for (const std::optional<glm::vec3> up : {std::optional<glm::vec3>(), std::optional<glm::vec3>(glm::vec3(0, 0, 1))}) {
+            const DefaultView without = default_view_as_read(mesh, up), with = default_view_as_read(mesh, up, false, &vf);
+            CHECK(with.eye == without.eye);
+            CHECK(with.up == without.up);
+            CHECK(with.angles.azimuth == without.angles.azimuth);
+            CHECK(with.angles.elevation == without.angles.elevation);
+        }
+    }
+}

@@ -48,6 +48,19 @@ TEST_CASE("flipping faces turns every vertex normal round", "[geometry][orientat
 
 // Back faces may be culled (geometry/culling/back_faces.h) only on consistently
 // wound, manifold, outward surfaces; the holes are the boundary components.
+TEST_CASE("flipping faces with the vertex-face rows makes them the turned mesh's", "[geometry][orientation]") {
+    Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));
+    // A degenerate face meeting one vertex twice: its two corners there swap places in the row.
+    bunny.faces.push_back({5, 5, 9});
+    bunny.faces.push_back({7, 8, 7});
+    bunny.faces.push_back({3, 6, 6});
+    VertexFaces vf = build_vertex_faces(bunny);
+    flip_faces(bunny, &vf);
+    const VertexFaces rebuilt = build_vertex_faces(bunny);
+    CHECK(vf.offsets == rebuilt.offsets);
+    CHECK(vf.corners == rebuilt.corners);
+}
+
 TEST_CASE("back faces: cullable surfaces and their holes", "[geometry][orientation]") {
     const Mesh torus = make_torus(1.0f, 0.3f, 48, 24);
     const BackFaceVisibility closed = back_face_visibility(torus);

@@ -224,11 +224,11 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             set_stage("loading");
             const auto t = std::chrono::steady_clock::now();
             Mesh input = app::load_mesh_or_default(request.path);
-            app::prepare_for_drawing(input);
+            VertexFaces vf = build_vertex_faces(input);
+            // The angle (auto or given) and the creases, as kappa render.
+            const app::DrawingPreparation prepared = app::prepare_for_drawing(input, vf, request.crease_angle);
             m.input_vertices = input.vertex_count();
-            // The angle (auto or given) and the creases from one look at the edges, as kappa render.
-            const std::vector<glm::uvec2> creases = resolve_creases(input, request.crease_angle).creases;
-            SplitMesh split = split_at_creases(std::move(input), creases);
+            SplitMesh split = split_at_creases(std::move(input), prepared.creases.creases);
             m.crease_points = render::crease_end_points(split);
             m.mesh = std::make_shared<const Mesh>(std::move(split.mesh));
             m.load_s = seconds_since(t);

@@ -1,6 +1,8 @@
 #include "creases.h"
 
+#include "crease_vote.h"
 #include "edge_bends.h"
+#include "face_survey.h"
 #include "edge_table.h"
 #include "union_find.h"
 #include "vertex_faces.h"
@@ -14,25 +16,26 @@
 
 namespace kappa {
 
-glm::vec3 face_normal(const Mesh& mesh, const Face& f) {
-    const glm::vec3 c = glm::cross(mesh.positions[f[1]] - mesh.positions[f[0]], mesh.positions[f[2]] - mesh.positions[f[0]]);
-    const float len = glm::length(c);
-    return len > 0 && std::isfinite(len) ? c / len : glm::vec3(0.0f);
+std::vector<glm::uvec2> creases_around(const Mesh& mesh, const VertexFaces& vf, float angle_deg,
+                                      const std::vector<uint32_t>& candidates) {
+    if (!(angle_deg > 0)) return {};
+    // Both passes are exact; around many candidates the whole one is the cheaper.
+    if (8 * candidates.size() > mesh.vertex_count()) return measure_edge_bends(mesh, vf, angle_deg).creases;
+    return measure_edge_bends_at(mesh, vf, angle_deg, candidates).creases;
 }
 
 std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg) {
     if (!(angle_deg > 0)) return {};
-    return measure_edge_bends(mesh, build_vertex_faces(mesh), angle_deg).creases;
+    return creases_around(mesh, build_vertex_faces(mesh), angle_deg, crease_candidates(mesh, angle_deg));
 }
 
-namespace {
+float auto_crease_angle(const Mesh& mesh) { return resolve_creases(mesh, build_vertex_faces(mesh), -1, false).angle; }
 
-bool auto_creases_on(const EdgeBends& bends) { return bends.interior > 0 && 2 * bends.between <= bends.interior; }
-
-}  // namespace
-
-float auto_crease_angle(const Mesh& mesh) {
-    return auto_creases_on(measure_edge_bends(mesh, build_vertex_faces(mesh), 0)) ? kAutoCreaseAngle : 0.0f;
+std::optional<float> sampled_crease_angle(const Mesh& mesh, const VertexFaces& vf, float setting) {
+    if (setting >= 0) return setting;
+    const CreaseVote vote = sampled_crease_vote(mesh, vf);
+    if (vote == CreaseVote::Unclear) return std::nullopt;
+    return vote == CreaseVote::On ? kAutoCreaseAngle : 0.0f;
 }
 
 ResolvedCreases resolve_creases(const Mesh& mesh, float setting) {
@@ -40,11 +43,17 @@ ResolvedCreases resolve_creases(const Mesh& mesh, float setting) {
     return resolve_creases(mesh, build_vertex_faces(mesh), setting);
 }
 
-ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float setting) {
+ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float setting, bool find) {
     ResolvedCreases out;
     if (setting == 0) return out;
-    EdgeBends bends = measure_edge_bends(mesh, vf, setting < 0 ? kAutoCreaseAngle : setting);
-    out.angle = setting > 0 ? setting : auto_creases_on(bends) ? kAutoCreaseAngle : 0.0f;
+    if (const std::optional<float> angle = sampled_crease_angle(mesh, vf, setting)) {
+        out.angle = *angle;
+        if (find) out.creases = creases_around(mesh, vf, out.angle, crease_candidates(mesh, out.angle));
+        return out;
+    }
+    // Auto, and the sample cannot tell: every edge counts.
+    EdgeBends bends = measure_edge_bends(mesh, vf, find ? kAutoCreaseAngle : 0);
+    out.angle = auto_creases_on(bends) ? kAutoCreaseAngle : 0.0f;
     if (out.angle > 0) out.creases = std::move(bends.creases);
     return out;
 }

@@ -14,9 +14,13 @@
 #include "mesh.h"
 #include "vertex_faces.h"
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include <cmath>
+
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace kappa {
@@ -24,10 +28,23 @@ namespace kappa {
 // The unit normal of a face (counter-clockwise from outside); zero where
 // the face is degenerate or not finite. The two faces of a crease bend by
 // the angle between theirs.
-glm::vec3 face_normal(const Mesh& mesh, const Face& f);
+inline glm::vec3 face_cross(const Mesh& mesh, const Face& f) {  // the normal before it is made unit
+    return glm::cross(mesh.positions[f[1]] - mesh.positions[f[0]], mesh.positions[f[2]] - mesh.positions[f[0]]);
+}
+inline glm::vec3 face_normal(const Mesh& mesh, const Face& f) {
+    const glm::vec3 c = face_cross(mesh, f);
+    const float len = glm::length(c);
+    return len > 0 && std::isfinite(len) ? c / len : glm::vec3(0.0f);
+}
 
 // The crease edges as vertex pairs (v0 < v1, sorted). angle_deg <= 0: none.
+// Looks only around the vertices where an edge may turn by more than the
+// angle (crease_candidates.h), then exactly as edge_bends.h.
 std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg);
+// The same with the mesh's vertex-face rows given and its candidates found
+// (crease_candidates.h, or in face_survey.h's pass).
+std::vector<glm::uvec2> creases_around(const Mesh& mesh, const VertexFaces& vf, float angle_deg,
+                                      const std::vector<uint32_t>& candidates);
 
 // `--crease-angle auto`, the default: 40 degrees on meshes made of flat and
 // sharp pieces, none on others. No threshold alone tells a CAD edge from a
@@ -37,20 +54,27 @@ std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg);
 // edges are flat (under 0.5 degrees) or sharp (over 40), with few between
 // (fandisk 15%, a cube 0%, a cylinder with flat caps 17%), while on smooth
 // meshes most are between (bunny-1M 66%, bunny.ply 89%, spot and
-// dragon-50k about 90%). Creases are on when at most half are between.
+// dragon-50k about 90%). Creases are on when at most half are between: on
+// big meshes far from half, as a sample of their edges tells (crease_vote.h).
 constexpr float kAutoCreaseAngle = 40.0f;
 float auto_crease_angle(const Mesh& mesh);  // kAutoCreaseAngle or 0
 
 // The angle a `--crease-angle` setting resolves to (< 0: auto, as
-// auto_crease_angle; 0: off) and the creases at it (as find_creases), from
-// one look at the edges (edge_bends.h) instead of one for each.
+// auto_crease_angle; 0: off) when no whole count of the edges is needed:
+// the setting itself, or auto's from the sampled vote; nullopt when the
+// sample cannot tell (then resolve_creases counts every edge).
+std::optional<float> sampled_crease_angle(const Mesh& mesh, const VertexFaces& vf, float setting);
+
+// The angle a setting resolves to and the creases at it (as find_creases),
+// looking at every edge at most once.
 struct ResolvedCreases {
     float angle = 0;
     std::vector<glm::uvec2> creases;
 };
 ResolvedCreases resolve_creases(const Mesh& mesh, float setting);
-// The same with the mesh's vertex-face rows given (build_vertex_faces).
-ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float setting);
+// The same with the mesh's vertex-face rows given (build_vertex_faces);
+// find = false: the angle alone.
+ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float setting, bool find = true);
 
 struct SplitMesh {
     Mesh mesh;                            // the input with crease vertices duplicated per side

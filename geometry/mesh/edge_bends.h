@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace kappa {
@@ -35,5 +36,13 @@ std::vector<glm::vec3> face_normals(const Mesh& mesh);
 // creases turning by more than `angle_deg` (none when angle_deg <= 0).
 // Deterministic, whatever the thread count.
 EdgeBends measure_edge_bends(const Mesh& mesh, const VertexFaces& vf, float angle_deg);
+// The same for the edges met at the listed vertices only (sorted, distinct):
+// the edges (v, w) with w > v around each. With per_vertex, each vertex's
+// own counts too, as (interior, between). Cheaper than the whole pass when
+// the list is short (the normals are computed as needed): a sample of the
+// vertices (crease_vote.h), or the few where an edge may be a crease
+// (crease_candidates.h).
+EdgeBends measure_edge_bends_at(const Mesh& mesh, const VertexFaces& vf, float angle_deg,
+                                const std::vector<uint32_t>& vertices, std::vector<glm::uvec2>* per_vertex = nullptr);
 
 }  // namespace kappa

@@ -1,5 +1,6 @@
 #include "default_view.h"
 
+#include "geometry/parallel/parallel.h"
 #include "geometry/scale/denoise.h"
 
 #include <glm/common.hpp>
@@ -283,23 +284,24 @@ glm::vec3 choose_up(const Mesh& mesh, bool denoised) {
     return z_up || stands ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
 }
 
-ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up) {
+ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up, const VertexFaces* vf) {
     const ViewFrame f = view_frame(up);
-    if (f.up == glm::vec3(0, 1, 0)) return choose_default_view(mesh);
+    if (f.up == glm::vec3(0, 1, 0)) return choose_default_view(mesh, vf);
     // The mesh in the frame's coordinates: the y-up rules apply as they are.
     Mesh turned;
     turned.faces = mesh.faces;
     turned.positions.reserve(mesh.positions.size());
     for (const glm::vec3& p : mesh.positions)
         turned.positions.push_back({glm::dot(p, f.right), glm::dot(p, f.up), glm::dot(p, f.front)});
-    return choose_default_view(turned);
+    return choose_default_view(turned, vf);
 }
 
-DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up, bool denoised) {
+DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up, bool denoised,
+                                 const VertexFaces* vf) {
     DefaultView v;
     const glm::vec3 u = up ? *up : choose_up(mesh, denoised);
     v.up = view_frame(u).up;
-    v.angles = choose_default_view(mesh, v.up);
+    v.angles = choose_default_view(mesh, v.up, vf);
     v.eye = view_direction(v.angles, v.up);
     return v;
 }
@@ -320,15 +322,30 @@ std::optional<glm::vec3> file_up_axis(const std::string& path) {
     return std::nullopt;
 }
 
-ViewAngles choose_default_view(const Mesh& mesh) {
-    // Vertex normals (area-weighted face normals), for how much each face bends.
-    std::vector<glm::vec3> vertex_normal(mesh.vertex_count(), glm::vec3(0.0f));
-    for (const Face& t : mesh.faces) {
-        const glm::vec3 c = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                       mesh.positions[t[2]] - mesh.positions[t[0]]);
-        if (!std::isfinite(c.x + c.y + c.z)) continue;
-        for (int k = 0; k < 3; ++k) vertex_normal[t[k]] += c;
+ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
+    // Vertex normals (area-weighted face normals, summed in face order), for how much each face bends:
+    // all of them at once, or with the vertex-face rows only those of the sampled faces.
+    auto area_normal = [&](const Face& t) {
+        return glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+    };
+    std::vector<glm::vec3> vertex_normals;
+    if (!vf) {
+        vertex_normals.assign(mesh.vertex_count(), glm::vec3(0.0f));
+        for (const Face& t : mesh.faces) {
+            const glm::vec3 c = area_normal(t);
+            if (!std::isfinite(c.x + c.y + c.z)) continue;
+            for (int k = 0; k < 3; ++k) vertex_normals[t[k]] += c;
+        }
     }
+    auto vertex_normal = [&](uint32_t v) {
+        if (!vf) return vertex_normals[v];
+        glm::vec3 sum(0.0f);
+        for (uint32_t k = vf->begin(v); k < vf->end(v); ++k) {  // the same sum, in the same order
+            const glm::vec3 c = area_normal(mesh.faces[vf->corners[k] / 3]);
+            if (std::isfinite(c.x + c.y + c.z)) sum += c;
+        }
+        return sum;
+    };
     // Area-weighted face normals (sampled), their orientation bins and their
     // bending: how far the vertex normals turn from the face's, per unit of
     // length (a curvature, so detail draws the eye: faces, hands, ears).
@@ -336,7 +353,7 @@ ViewAngles choose_default_view(const Mesh& mesh) {
     const size_t step = std::max<size_t>(1, (mesh.face_count() + kMaxSampledFaces - 1) / kMaxSampledFaces);
     std::vector<glm::vec3> area_normals;
     std::vector<uint8_t> bin;
-    std::vector<float> bending;
+    std::vector<uint32_t> sampled;  // their faces
     for (size_t f = 0; f < mesh.face_count(); f += step) {
         const Face& t = mesh.faces[f];
         const glm::vec3 c = 0.5f * glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
@@ -348,14 +365,26 @@ ViewAngles choose_default_view(const Mesh& mesh) {
             if (glm::dot(c, dirs[size_t(b)]) > glm::dot(c, dirs[size_t(best)])) best = b;
         area_normals.push_back(c);
         bin.push_back(uint8_t(best));
-        float turn = 0, perimeter = 0;
-        for (int k = 0; k < 3; ++k) {
-            const float ln = glm::length(vertex_normal[t[k]]);
-            if (ln > 0) turn += glm::length(vertex_normal[t[k]] / ln - c / a);
-            perimeter += glm::length(mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]);
-        }
-        bending.push_back(perimeter > 0 ? 3.0f * turn / perimeter : 0.0f);
+        sampled.push_back(uint32_t(f));
     }
+    // Each face's bending on its own (in parallel: the vertex normals summed from the rows wait on memory).
+    std::vector<float> bending(sampled.size());
+    parallel_for_chunked(
+        sampled.size(),
+        [&](size_t i) {
+            const Face& t = mesh.faces[sampled[i]];
+            const glm::vec3 c = area_normals[i];
+            const float a = glm::length(c);
+            float turn = 0, perimeter = 0;
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 n = vertex_normal(t[k]);
+                const float ln = glm::length(n);
+                if (ln > 0) turn += glm::length(n / ln - c / a);
+                perimeter += glm::length(mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]);
+            }
+            bending[i] = perimeter > 0 ? 3.0f * turn / perimeter : 0.0f;
+        },
+        1024);
 
     // Candidates in tie-breaking order.
     std::vector<ViewAngles> candidates;

@@ -58,6 +58,7 @@
 #pragma once
 
 #include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/vec3.hpp>
 
@@ -96,9 +97,12 @@ glm::vec3 choose_up(const Mesh& mesh, bool denoised = false);
 
 // The default view's angles (see above), about +y. A mesh with no face area
 // gets azimuth 30, elevation 20.
-ViewAngles choose_default_view(const Mesh& mesh);
+// vf: the mesh's vertex-face rows (vertex_faces.h), when the caller has
+// them: the vertex normals are then summed only where the sampled faces need
+// them (the same sums; on big meshes most of the default view's time).
+ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf = nullptr);
 // The same about `up` (any non-zero direction; the view_frame of up).
-ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up);
+ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up, const VertexFaces* vf = nullptr);
 
 struct DefaultView {
     glm::vec3 eye{0, 0, 1};  // unit, from the model's centre towards the eye
@@ -116,7 +120,7 @@ DefaultView default_view(const Mesh& mesh, std::optional<glm::vec3> up = std::nu
 // view_surface, which takes both from the detail pipeline's own noise
 // estimate).
 DefaultView default_view_as_read(const Mesh& surface, std::optional<glm::vec3> up = std::nullopt,
-                                 bool denoised = false);
+                                 bool denoised = false, const VertexFaces* vf = nullptr);
 
 // The up axis a file's format fixes, by its extension: +y for glTF (.gltf,
 // .glb: the reader gives the specification's +y up); none for the others.

@@ -1,0 +1,224 @@
+// The shortcuts that find creases on big meshes without looking at every
+// edge (geometry/mesh/crease_vote.h, crease_candidates.h, face_survey.h)
+// give what the whole count gives: the sampled `auto` vote agrees with it
+// far from half (and leaves meshes at half to it), and the creases found
+// around the candidates are the whole pass's, at angles just above and
+// below the bends of a mesh.
+#include "test_support.h"
+
+#include "geometry/io/mesh_io.h"
+#include "geometry/mesh/crease_vote.h"
+#include "geometry/mesh/creases.h"
+#include "geometry/mesh/edge_bends.h"
+#include "geometry/mesh/face_survey.h"
+#include "geometry/mesh/orientation.h"
+#include "geometry/mesh/primitives.h"
+#include "geometry/mesh/vertex_faces.h"
+#include "geometry/parallel/parallel.h"
+
+#include <glm/geometric.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace kappa;
+
+namespace {
+
+// An n x n grid of unit squares, two triangles each, at height z(i, j),
+// moved along x by `offset` (grids side by side make one mesh).
+template <typename Height>
+void add_grid(Mesh& m, int n, float offset, Height&& z) {
+    const uint32_t first = uint32_t(m.positions.size());
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) m.positions.push_back({offset + float(i), float(j), z(i, j)});
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const uint32_t a = first + uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n), d = c + 1;
+            m.faces.push_back({a, b, d});
+            m.faces.push_back({a, d, c});
+        }
+}
+
+// Flat: every interior edge turns by 0 degrees (not between 0.5 and 40).
+void add_flat(Mesh& m, int n, float offset) {
+    add_grid(m, n, offset, [](int, int) { return 0.0f; });
+}
+
+// Random heights: nearly every interior edge bends by a few degrees (between).
+void add_bumpy(Mesh& m, int n, float offset) {
+    std::mt19937 rng{uint32_t(n)};
+    std::uniform_real_distribution<float> height(-0.05f, 0.05f);
+    std::vector<float> z(size_t(n) * size_t(n));
+    for (float& h : z) h = height(rng);
+    add_grid(m, n, offset, [&](int i, int j) { return z[size_t(j) * size_t(n) + size_t(i)]; });
+}
+
+// Flat pieces with `count` interior edges in all: a grid of g^2 vertices ((g - 1)(3g - 5) of them),
+// then single squares (one each).
+void add_flat_edges(Mesh& m, size_t count, float offset) {
+    int g = 2;
+    while (size_t(g) * size_t(3 * g - 2) <= count) ++g;  // the next grid's g (3g - 2) still fits
+    if (g > 2) add_flat(m, g, offset);
+    const size_t in_grid = g > 2 ? size_t(g - 1) * size_t(3 * g - 5) : 0;
+    for (size_t k = 0; k < count - in_grid; ++k) add_flat(m, 2, offset + float(g + 1) + 2.0f * float(k));
+}
+
+CreaseVote full_vote(const Mesh& m) {
+    return auto_creases_on(measure_edge_bends(m, build_vertex_faces(m), 0)) ? CreaseVote::On : CreaseVote::Off;
+}
+
+}  // namespace
+
+TEST_CASE("Creases: the sampled auto vote agrees with the whole count, and leaves half to it", "[creases]") {
+    // Big enough to be sampled (8 x 32768 vertices or more).
+    const int n = 363;
+    Mesh flat, bumpy, mostly_flat, mostly_bumpy;
+    add_flat(flat, 2 * n, 0);
+    add_bumpy(bumpy, 2 * n, 0);
+    add_flat(mostly_flat, n + 60, 0), add_bumpy(mostly_flat, n - 60, float(n + 61));
+    add_flat(mostly_bumpy, n - 60, 0), add_bumpy(mostly_bumpy, n + 60, float(n - 59));
+    // Right at the boundary: bumpy, then as many flat edges as make the bent ones exactly half
+    // (creases on), or one fewer (just over half: off), or one more (just under: on).
+    Mesh even, just_over, just_under;
+    const EdgeBends b = [&] {
+        Mesh m;
+        add_bumpy(m, 2 * n, 0);
+        return measure_edge_bends(m, build_vertex_faces(m), 0);
+    }();
+    REQUIRE(2 * b.between > b.interior);
+    const size_t flat_edges = 2 * b.between - b.interior;
+    for (auto [mesh, count] : {std::pair<Mesh*, size_t>{&even, flat_edges}, {&just_over, flat_edges - 1},
+                               {&just_under, flat_edges + 1}}) {
+        add_bumpy(*mesh, 2 * n, 0);
+        add_flat_edges(*mesh, count, float(2 * n + 1));
+    }
+    const EdgeBends e = measure_edge_bends(even, build_vertex_faces(even), 0);
+    REQUIRE(2 * e.between == e.interior);
+    struct Case {
+        const char* name;
+        const Mesh* mesh;
+        CreaseVote expected;  // of the whole count
+        bool sampled;         // whether the sample decides
+    };
+    const Case cases[] = {{"flat", &flat, CreaseVote::On, true},
+                          {"bumpy", &bumpy, CreaseVote::Off, true},
+                          {"mostly flat (about 0.4)", &mostly_flat, CreaseVote::On, true},
+                          {"mostly bumpy (about 0.6)", &mostly_bumpy, CreaseVote::Off, true},
+                          {"exactly half", &even, CreaseVote::On, false},
+                          {"just over half", &just_over, CreaseVote::Off, false},
+                          {"just under half", &just_under, CreaseVote::On, false}};
+    for (const Case& c : cases) {
+        INFO(c.name);
+        REQUIRE(c.mesh->vertex_count() >= 8 * kVoteSamples);
+        const CreaseVote whole = full_vote(*c.mesh);
+        CHECK(whole == c.expected);
+        const VertexFaces vf = build_vertex_faces(*c.mesh);
+        const CreaseVote sampled = sampled_crease_vote(*c.mesh, vf);
+        CHECK(sampled == (c.sampled ? whole : CreaseVote::Unclear));
+        const float angle = whole == CreaseVote::On ? kAutoCreaseAngle : 0.0f;
+        CHECK(auto_crease_angle(*c.mesh) == angle);
+        CHECK(resolve_creases(*c.mesh, vf, -1).angle == angle);
+    }
+    // A real smooth mesh big enough to be sampled: bunny-1M (66% between).
+    const Mesh bunny = load_mesh(test::shared_mesh("bunny-1M.ply"));
+    const VertexFaces vf = build_vertex_faces(bunny);
+    CHECK(full_vote(bunny) == CreaseVote::Off);
+    CHECK(sampled_crease_vote(bunny, vf) == CreaseVote::Off);
+    // Small meshes are always counted whole.
+    const Mesh small = make_icosphere(1, 4);
+    CHECK(sampled_crease_vote(small, build_vertex_faces(small)) == CreaseVote::Unclear);
+}
+
+namespace {
+
+// A square grid folded along its columns: the strip between
+// columns i and i + 1 rises at angle tilt[i] (degrees), so the edges along
+// column i turn by |tilt[i] - tilt[i - 1]|.
+Mesh folded(const std::vector<double>& tilt) {
+    Mesh m;
+    const int n = int(tilt.size()) + 1;
+    std::vector<double> z(size_t(n), 0.0);
+    for (int i = 1; i < n; ++i) z[size_t(i)] = z[size_t(i - 1)] + std::tan(tilt[size_t(i - 1)] * M_PI / 180.0);
+    add_grid(m, n, 0, [&](int i, int) { return float(z[size_t(i)]); });
+    return m;
+}
+
+// Each crease's vertices are candidates, and the creases around the
+// candidates are the whole pass's, in the same order.
+void check_candidates(const Mesh& m, float angle) {
+    INFO("angle " << angle);
+    const VertexFaces vf = build_vertex_faces(m);
+    const EdgeBends whole = measure_edge_bends(m, vf, angle);
+    const std::vector<uint32_t> candidates = crease_candidates(m, angle);
+    for (const glm::uvec2& c : whole.creases) {
+        CHECK(std::binary_search(candidates.begin(), candidates.end(), c.x));
+        CHECK(std::binary_search(candidates.begin(), candidates.end(), c.y));
+    }
+    const EdgeBends around = measure_edge_bends_at(m, vf, angle, candidates);
+    CHECK(around.creases == whole.creases);
+    CHECK(around.crease_faces == whole.crease_faces);
+    CHECK(creases_around(m, vf, angle, candidates) == whole.creases);
+    CHECK(find_creases(m, angle) == whole.creases);
+}
+
+}  // namespace
+
+TEST_CASE("Creases: those found around the candidates are the whole pass's", "[creases]") {
+    // Folds just above and just below 40 and 10 degrees, and far from them.
+    std::vector<double> tilt{-40};
+    int folds_over_40 = 0;
+    for (const double fold : {40.01, 39.99, 40.001, 39.999, 40.0001, 39.9999, 10.001, 9.999, 80.0, 1.0, 0.3}) {
+        tilt.push_back(tilt.back() + (tilt.back() < 0 ? fold : -fold));  // up and down, within +-80
+        tilt.push_back(tilt.back());  // a flat strip between folds
+        folds_over_40 += fold > 40;
+    }
+    const Mesh fold = folded(tilt);
+    for (const float angle : {40.0f, 10.0f, 5.0f, 60.0f, 0.5f, 0.2f, 179.0f}) check_candidates(fold, angle);
+    CHECK(find_creases(fold, 40).size() == tilt.size() * size_t(folds_over_40));  // a column of edges a fold
+
+    Mesh fandisk = load_mesh(test::shared_mesh("fandisk.obj"));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> jitter(-0.004f, 0.004f);
+    Mesh jittered = fandisk;
+    for (glm::vec3& p : jittered.positions) p += glm::vec3(jitter(rng), jitter(rng), jitter(rng));
+    for (const Mesh* m : {&fandisk, &jittered})
+        for (const float angle : {kAutoCreaseAngle, 10.0f, 20.0f, 60.0f, 89.0f, 150.0f}) check_candidates(*m, angle);
+    // Turned inside out, the candidates of the mesh as it was still hold (prepare_for_drawing turns it after the pass).
+    Mesh turned = jittered;
+    flip_faces(turned);
+    const std::vector<uint32_t> before = crease_candidates(jittered, 20);
+    CHECK(creases_around(turned, build_vertex_faces(turned), 20, before) ==
+          measure_edge_bends(turned, build_vertex_faces(turned), 20).creases);
+    // Whatever the thread count: the candidates may differ, the creases do not.
+    set_thread_count(1);
+    const std::vector<glm::uvec2> one = find_creases(jittered, 20);
+    set_thread_count(0);
+    CHECK(find_creases(jittered, 20) == one);
+}
+
+TEST_CASE("The pass over the faces: volumes as the inside-out test sums them, whatever the thread count",
+          "[creases][orientation]") {
+    Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));
+    set_thread_count(1);
+    const FaceSurvey one = survey_faces(bunny, kAutoCreaseAngle);
+    set_thread_count(0);
+    const FaceSurvey many = survey_faces(bunny, kAutoCreaseAngle);
+    CHECK(one.volumes.signed_sum == many.volumes.signed_sum);
+    CHECK(one.volumes.unsigned_sum == many.volumes.unsigned_sum);
+    // The serial sum of the same terms, within the rounding of a different order.
+    const glm::dvec3 centroid = vertex_centroid(bunny);
+    double signed_sum = 0, unsigned_sum = 0;
+    for (const Face& f : bunny.faces) {
+        const double v = tetrahedron_volume6(bunny, f, centroid);
+        signed_sum += v, unsigned_sum += std::fabs(v);
+    }
+    CHECK(many.volumes.signed_sum == Approx(signed_sum).epsilon(1e-12));
+    CHECK(many.volumes.unsigned_sum == Approx(unsigned_sum).epsilon(1e-12));
+    CHECK(!is_inside_out(many.volumes));
+    flip_faces(bunny);
+    CHECK(is_inside_out(survey_faces(bunny, 0).volumes));
+}
