@@ -120,9 +120,23 @@ struct UpEvidence {
 
 UpEvidence up_evidence(const Mesh& mesh, size_t step) {
     UpEvidence e;
+    // The bounds in blocks, in parallel (the least and greatest are the same in any order).
+    constexpr size_t kBlock = 65536;
+    const size_t nv = mesh.positions.size();
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> bounds((nv + kBlock - 1) / kBlock,
+                                                          {glm::dvec3(INFINITY), glm::dvec3(-INFINITY)});
+    parallel_for_chunked(
+        bounds.size(),
+        [&](size_t b) {
+            auto& [lo, hi] = bounds[b];
+            for (size_t v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v) {
+                const glm::vec3 p = mesh.positions[v];
+                if (std::isfinite(p.x + p.y + p.z)) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+            }
+        },
+        1);
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec3& p : mesh.positions)
-        if (std::isfinite(p.x + p.y + p.z)) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+    for (const auto& [block_lo, block_hi] : bounds) lo = glm::min(lo, block_lo), hi = glm::max(hi, block_hi);
     if (!(lo.x <= hi.x)) return e;
     const glm::dvec3 size = hi - lo;
     for (int k = 0; k < 3; ++k) e.extent[k] = size[k];
@@ -337,10 +351,9 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
             for (int k = 0; k < 3; ++k) vertex_normals[t[k]] += c;
         }
     }
-    auto vertex_normal = [&](uint32_t v) {
-        if (!vf) return vertex_normals[v];
+    auto summed_normal = [&](uint32_t v) {  // from the rows: the same sum, in the same order
         glm::vec3 sum(0.0f);
-        for (uint32_t k = vf->begin(v); k < vf->end(v); ++k) {  // the same sum, in the same order
+        for (uint32_t k = vf->begin(v); k < vf->end(v); ++k) {
             const glm::vec3 c = area_normal(mesh.faces[vf->corners[k] / 3]);
             if (std::isfinite(c.x + c.y + c.z)) sum += c;
         }
@@ -351,23 +364,60 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
     // length (a curvature, so detail draws the eye: faces, hands, ears).
     const auto dirs = bin_directions();
     const size_t step = std::max<size_t>(1, (mesh.face_count() + kMaxSampledFaces - 1) / kMaxSampledFaces);
-    std::vector<glm::vec3> area_normals;
-    std::vector<uint8_t> bin;
+    // Each sampled face on its own (in parallel: they lie all over memory), then those with an area kept.
+    const size_t samples = (mesh.face_count() + step - 1) / step;
+    std::vector<glm::vec3> area_normals(samples);
+    std::vector<uint8_t> bin(samples);
+    parallel_for_chunked(
+        samples,
+        [&](size_t i) {
+            const Face& t = mesh.faces[i * step];
+            const glm::vec3 c = 0.5f * glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                                  mesh.positions[t[2]] - mesh.positions[t[0]]);
+            const float a = glm::length(c);
+            int best = 0;
+            for (int b = 1; b < kBins; ++b)
+                if (glm::dot(c, dirs[size_t(b)]) > glm::dot(c, dirs[size_t(best)])) best = b;
+            area_normals[i] = a > 0 && std::isfinite(a) ? c : glm::vec3(0.0f);
+            bin[i] = uint8_t(best);
+        },
+        4096);
     std::vector<uint32_t> sampled;  // their faces
-    for (size_t f = 0; f < mesh.face_count(); f += step) {
-        const Face& t = mesh.faces[f];
-        const glm::vec3 c = 0.5f * glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                              mesh.positions[t[2]] - mesh.positions[t[0]]);
-        const float a = glm::length(c);
-        if (!(a > 0) || !std::isfinite(a)) continue;
-        int best = 0;
-        for (int b = 1; b < kBins; ++b)
-            if (glm::dot(c, dirs[size_t(b)]) > glm::dot(c, dirs[size_t(best)])) best = b;
-        area_normals.push_back(c);
-        bin.push_back(uint8_t(best));
-        sampled.push_back(uint32_t(f));
+    size_t kept = 0;
+    for (size_t i = 0; i < samples; ++i)
+        if (area_normals[i] != glm::vec3(0.0f)) {
+            area_normals[kept] = area_normals[i], bin[kept++] = bin[i];
+            sampled.push_back(uint32_t(i * step));
+        }
+    area_normals.resize(kept), bin.resize(kept);
+    // With the rows: the normals of the sampled faces' vertices alone, in vertex order and in parallel
+    // (the faces around them lie all over memory: those of a vertex a few ahead are fetched early).
+    std::vector<uint32_t> sampled_vertices;
+    std::vector<glm::vec3> sampled_normals;
+    if (vf) {
+        for (const uint32_t f : sampled)
+            for (int k = 0; k < 3; ++k) sampled_vertices.push_back(mesh.faces[f][k]);
+        std::sort(sampled_vertices.begin(), sampled_vertices.end());
+        sampled_vertices.erase(std::unique(sampled_vertices.begin(), sampled_vertices.end()), sampled_vertices.end());
+        sampled_normals.resize(sampled_vertices.size());
+        const size_t n = sampled_vertices.size();
+        parallel_for_chunked(
+            n,
+            [&](size_t i) {
+                if (i + 16 < n) __builtin_prefetch(&vf->corners[vf->begin(sampled_vertices[i + 16])]);
+                if (i + 8 < n)
+                    for (uint32_t k = vf->begin(sampled_vertices[i + 8]); k < vf->end(sampled_vertices[i + 8]); ++k)
+                        __builtin_prefetch(&mesh.faces[vf->corners[k] / 3]);
+                sampled_normals[i] = summed_normal(sampled_vertices[i]);
+            },
+            4096);
     }
-    // Each face's bending on its own (in parallel: the vertex normals summed from the rows wait on memory).
+    auto vertex_normal = [&](uint32_t v) {
+        if (!vf) return vertex_normals[v];
+        return sampled_normals[size_t(std::lower_bound(sampled_vertices.begin(), sampled_vertices.end(), v) -
+                                      sampled_vertices.begin())];
+    };
+    // Each face's bending on its own.
     std::vector<float> bending(sampled.size());
     parallel_for_chunked(
         sampled.size(),
