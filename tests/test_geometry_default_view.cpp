@@ -116,6 +116,22 @@ TEST_CASE("The default view with the vertex-face rows given is the same, to the 
     for (const char* name : {"bunny.ply", "fandisk.obj", "spot.obj", "dragon-50k.ply"})
         meshes.push_back({name, load_mesh(test::shared_mesh(name))});
     meshes.push_back({"spot, z up", zup});
+    // Big enough (4.8M faces or more) for the sampled vertices' normals to be summed from the rows.
+    Mesh hills;
+    const int n = 1560;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float x = float(i) / float(n), y = float(j) / float(n);
+            hills.positions.push_back({x, 0.1f * std::sin(17.0f * x) * std::cos(11.0f * y) + 0.002f * std::sin(float(i * j)), y});
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const uint32_t a = uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n), d = c + 1;
+            hills.faces.push_back({a, d, b});
+            hills.faces.push_back({a, c, d});
+        }
+    REQUIRE(hills.face_count() >= 24 * 200000);
+    meshes.push_back({"hills", std::move(hills)});
     for (const auto& [name, mesh] : meshes) {
         INFO(name);
         const VertexFaces vf = build_vertex_faces(mesh);

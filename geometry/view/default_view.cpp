@@ -338,19 +338,10 @@ std::optional<glm::vec3> file_up_axis(const std::string& path) {
 
 ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
     // Vertex normals (area-weighted face normals, summed in face order), for how much each face bends:
-    // all of them at once, or with the vertex-face rows only those of the sampled faces.
+    // all of them at once, or from the vertex-face rows only those of the sampled faces (below).
     auto area_normal = [&](const Face& t) {
         return glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
     };
-    std::vector<glm::vec3> vertex_normals;
-    if (!vf) {
-        vertex_normals.assign(mesh.vertex_count(), glm::vec3(0.0f));
-        for (const Face& t : mesh.faces) {
-            const glm::vec3 c = area_normal(t);
-            if (!std::isfinite(c.x + c.y + c.z)) continue;
-            for (int k = 0; k < 3; ++k) vertex_normals[t[k]] += c;
-        }
-    }
     auto summed_normal = [&](uint32_t v) {  // from the rows: the same sum, in the same order
         glm::vec3 sum(0.0f);
         for (uint32_t k = vf->begin(v); k < vf->end(v); ++k) {
@@ -390,11 +381,14 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
             sampled.push_back(uint32_t(i * step));
         }
     area_normals.resize(kept), bin.resize(kept);
-    // With the rows: the normals of the sampled faces' vertices alone, in vertex order and in parallel
-    // (the faces around them lie all over memory: those of a vertex a few ahead are fetched early).
+    // With the rows, when one face in 24 or fewer is sampled (meshes of 4.8M faces or more: the sampled
+    // faces' corners then have about 18 / 24 of the faces around them, each fetched from anywhere): the
+    // normals of those vertices alone, in vertex order and in parallel (the faces of a vertex a few ahead
+    // fetched early). Otherwise every face adds its normal to its corners', in one sweep.
+    const bool from_rows = vf && step >= 24 && !sampled.empty();
     std::vector<uint32_t> sampled_vertices;
     std::vector<glm::vec3> sampled_normals;
-    if (vf) {
+    if (from_rows) {
         for (const uint32_t f : sampled)
             for (int k = 0; k < 3; ++k) sampled_vertices.push_back(mesh.faces[f][k]);
         std::sort(sampled_vertices.begin(), sampled_vertices.end());
@@ -412,8 +406,17 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
             },
             4096);
     }
+    std::vector<glm::vec3> vertex_normals;
+    if (!from_rows) {
+        vertex_normals.assign(mesh.vertex_count(), glm::vec3(0.0f));
+        for (const Face& t : mesh.faces) {
+            const glm::vec3 c = area_normal(t);
+            if (!std::isfinite(c.x + c.y + c.z)) continue;
+            for (int k = 0; k < 3; ++k) vertex_normals[t[k]] += c;
+        }
+    }
     auto vertex_normal = [&](uint32_t v) {
-        if (!vf) return vertex_normals[v];
+        if (!from_rows) return vertex_normals[v];
         return sampled_normals[size_t(std::lower_bound(sampled_vertices.begin(), sampled_vertices.end(), v) -
                                       sampled_vertices.begin())];
     };
