@@ -7,6 +7,7 @@
 #include "union_find.h"
 #include "vertex_faces.h"
 
+#include "geometry/io/prefault.h"
 #include "geometry/parallel/parallel.h"
 
 #include <glm/geometric.hpp>
@@ -141,6 +142,7 @@ std::vector<uint64_t> crease_corners(const VertexFaces& vf, const std::vector<ui
 SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, VertexFaces* vf) {
     SplitMesh out;
     const size_t nv = mesh.vertex_count();
+    io::reserve_prefaulted(out.original, nv);  // big buffers: their pages mapped up front (prefault.h)
     out.original.resize(nv);
     for (size_t v = 0; v < nv; ++v) out.original[v] = uint32_t(v);
     if (creases.empty()) {  // most scans: no copy
@@ -228,6 +230,7 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, Ve
     }
 
     out.mesh = std::move(mesh);
+    io::reserve_prefaulted(out.mesh.positions, out.original.size());
     for (size_t v = nv; v < out.original.size(); ++v) out.mesh.positions.push_back(out.mesh.positions[out.original[v]]);
     for (const auto& [corner, copy] : moves) out.mesh.faces[corner / 3][corner % 3] = copy;
     if (vf) move_corners(*vf, std::move(moves), out.original, nv);
