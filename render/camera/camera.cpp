@@ -1,5 +1,6 @@
 #include "render/camera/camera.h"
 
+#include "geometry/parallel/parallel.h"
 #include "geometry/view/default_view.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,21 +10,37 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace kappa::render {
 
 BoundingSphere bounding_sphere(const Mesh& mesh) {
     if (mesh.positions.empty()) return {};
+    // In blocks, in parallel: least, greatest and largest are the same in any order.
+    constexpr size_t kBlock = 65536;
+    const size_t n = mesh.positions.size(), blocks = (n + kBlock - 1) / kBlock;
+    auto each_block = [&](auto&& body) {
+        parallel_for_chunked(blocks, [&](size_t b) { body(b, b * kBlock, std::min(n, (b + 1) * kBlock)); }, 1);
+    };
+    std::vector<std::pair<glm::vec3, glm::vec3>> bounds(blocks, {mesh.positions[0], mesh.positions[0]});
+    each_block([&](size_t b, size_t first, size_t last) {
+        auto& [lo, hi] = bounds[b];
+        for (size_t v = first; v < last; ++v) lo = glm::min(lo, mesh.positions[v]), hi = glm::max(hi, mesh.positions[v]);
+    });
     glm::vec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
-    for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (const auto& [block_lo, block_hi] : bounds) lo = glm::min(lo, block_lo), hi = glm::max(hi, block_hi);
     BoundingSphere s;
     s.center = glm::vec3(0.5 * (glm::dvec3(lo) + glm::dvec3(hi)));
-    double r2 = 0;  // in double: squares of coordinates near 1e20 overflow float
-    for (const auto& p : mesh.positions) {
-        const glm::dvec3 d = glm::dvec3(p) - glm::dvec3(s.center);
-        r2 = std::max(r2, glm::dot(d, d));
-    }
-    s.radius = r2 > 0 ? float(std::sqrt(r2)) : 1.0f;
+    std::vector<double> r2(blocks, 0.0);  // in double: squares of coordinates near 1e20 overflow float
+    each_block([&](size_t b, size_t first, size_t last) {
+        for (size_t v = first; v < last; ++v) {
+            const glm::dvec3 d = glm::dvec3(mesh.positions[v]) - glm::dvec3(s.center);
+            r2[b] = std::max(r2[b], glm::dot(d, d));
+        }
+    });
+    const double largest = *std::max_element(r2.begin(), r2.end());
+    s.radius = largest > 0 ? float(std::sqrt(largest)) : 1.0f;
     return s;
 }
 
