@@ -122,7 +122,8 @@ TEST_CASE("The default view with the vertex-face rows given is the same, to the 
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const float x = float(i) / float(n), y = float(j) / float(n);
-            hills.positions.push_back({x, 0.1f * std::sin(17.0f * x) * std::cos(11.0f * y) + 0.002f * std::sin(float(i * j)), y});
+            const float height = 0.1f * std::sin(17.0f * x) * std::cos(11.0f * y) + 0.002f * std::sin(float(i * j));
+            hills.positions.push_back({x, height, y});
         }
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
@@ -135,8 +136,9 @@ TEST_CASE("The default view with the vertex-face rows given is the same, to the 
     for (const auto& [name, mesh] : meshes) {
         INFO(name);
         const VertexFaces vf = build_vertex_faces(mesh);
-        for (const std::optional<glm::vec3> up : {std::optional<glm::vec3>(), std::optional<glm::vec3>(glm::vec3(0, 0, 1))}) {
-            const DefaultView without = default_view_as_read(mesh, up), with = default_view_as_read(mesh, up, false, &vf);
+        for (const std::optional<glm::vec3> up : {std::optional<glm::vec3>(), std::optional<glm::vec3>({0, 0, 1})}) {
+            const DefaultView without = default_view_as_read(mesh, up);
+            const DefaultView with = default_view_as_read(mesh, up, false, &vf);
             CHECK(with.eye == without.eye);
             CHECK(with.up == without.up);
             CHECK(with.angles.azimuth == without.angles.azimuth);

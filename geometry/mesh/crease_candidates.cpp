@@ -62,7 +62,8 @@ void CreaseCandidates::add_face(const Face& face, glm::vec3 cross, size_t block)
         // The angle between the face's normal and r is at most the half angle: cos^2 >= cos^2(half), cos > 0.
         const glm::vec3 r = unpack(packed);
         const float d = glm::dot(cross, r);
-        if (!(d > 0 && d * d >= cos2_half_ * length2 * glm::dot(r, r))) candidate_[v].store(1, std::memory_order_relaxed);
+        if (!(d > 0 && d * d >= cos2_half_ * length2 * glm::dot(r, r)))
+            candidate_[v].store(1, std::memory_order_relaxed);
     }
 }
 

@@ -147,7 +147,8 @@ EdgeBends measure_edge_bends_at(const Mesh& mesh, const VertexFaces& vf, float a
                     EdgeBends& out = partial[b];
                     const size_t interior = out.interior, between = out.between;
                     bends_at(mesh, vf, vertices[i], limits, normal, keys, out);
-                    if (per_vertex) (*per_vertex)[i] = {uint32_t(out.interior - interior), uint32_t(out.between - between)};
+                    if (per_vertex)
+                        (*per_vertex)[i] = {uint32_t(out.interior - interior), uint32_t(out.between - between)};
                 }
         },
         1);

@@ -22,7 +22,8 @@ glm::dvec3 vertex_centroid(const Mesh& mesh) {
         partial.size(),
         [&](size_t first, size_t last) {
             for (size_t b = first; b < last; ++b)
-                for (size_t v = b * kBlock; v < std::min(n, (b + 1) * kBlock); ++v) partial[b] += glm::dvec3(mesh.positions[v]);
+                for (size_t v = b * kBlock; v < std::min(n, (b + 1) * kBlock); ++v)
+                    partial[b] += glm::dvec3(mesh.positions[v]);
         },
         1);
     glm::dvec3 sum(0.0);

@@ -26,7 +26,8 @@ BoundingSphere bounding_sphere(const Mesh& mesh) {
     std::vector<std::pair<glm::vec3, glm::vec3>> bounds(blocks, {mesh.positions[0], mesh.positions[0]});
     each_block([&](size_t b, size_t first, size_t last) {
         auto& [lo, hi] = bounds[b];
-        for (size_t v = first; v < last; ++v) lo = glm::min(lo, mesh.positions[v]), hi = glm::max(hi, mesh.positions[v]);
+        for (size_t v = first; v < last; ++v)
+            lo = glm::min(lo, mesh.positions[v]), hi = glm::max(hi, mesh.positions[v]);
     });
     glm::vec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
     for (const auto& [block_lo, block_hi] : bounds) lo = glm::min(lo, block_lo), hi = glm::max(hi, block_hi);
