@@ -44,7 +44,7 @@ bool is_outside_out(const Mesh& mesh) {
 
 void flip_faces(Mesh& mesh, VertexFaces* vf) {
     for (Face& f : mesh.faces) std::swap(f[1], f[2]);
-    if (!vf) return;
+    if (!vf || vf->offsets.empty()) return;
     // Corner 1 of each face is now corner 2 and the other way round. Rows stay in face order; only a
     // vertex met twice in one face (a degenerate face) may need its two corners swapped back in order.
     parallel_for(vf->offsets.size() - 1, [&](size_t v) {
