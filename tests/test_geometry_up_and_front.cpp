@@ -167,7 +167,7 @@ TEST_CASE("A standing figure is seen upright along its long axis", "[view]") {
 // standing on its head it is the other way round, and +y is kept. A clean
 // figure without a flat base is not read so: that rule is for denoised
 // scans only, as lying objects with one blunt end keep their file's +y.
-TEST_CASE("A noisy scan of a standing figure stands upright; on its head it keeps +y", "[view]") {
+TEST_CASE("A noisy scan of a standing figure stands upright, and on its head keeps +y", "[view]") {
     const Mesh figure = figure_z_up();
     const Mesh on_its_head = mapped(figure, [](glm::vec3 p) { return glm::vec3(p.x, -p.y, -p.z); });
     for (float eta : {0.1f, 0.33f, 0.5f})
