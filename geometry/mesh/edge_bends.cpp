@@ -80,8 +80,22 @@ void bends_at(const Mesh& mesh, const VertexFaces& vf, size_t v, const BendLimit
     }
 }
 
-// Joins the blocks' results in order: the creases come out sorted.
-EdgeBends join(const std::vector<EdgeBends>& partial) {
+// Calls item(i, keys, out) for i in [0, n) in blocks of `block` items, each
+// block with its own EdgeBends (blocks, not threads, own the partial results,
+// so the sums and the crease order do not depend on the thread count), then
+// joins the blocks' results in order: the creases come out sorted.
+template <typename Item>
+EdgeBends in_blocks(size_t n, size_t block, Item&& item) {
+    const size_t blocks = (n + block - 1) / block;
+    std::vector<EdgeBends> partial(blocks);
+    parallel_for_chunks(
+        blocks,
+        [&](size_t first, size_t last) {
+            std::vector<uint64_t> keys;  // scratch of bends_at
+            for (size_t b = first; b < last; ++b)
+                for (size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) item(i, keys, partial[b]);
+        },
+        1);
     EdgeBends all;
     for (const EdgeBends& p : partial) {
         all.interior += p.interior;
@@ -109,25 +123,15 @@ EdgeBends measure_edge_bends(const Mesh& mesh, const VertexFaces& vf, float angl
     const size_t nv = mesh.vertex_count();
     const std::vector<glm::vec3> normals = face_normals(mesh);
     const BendLimits limits(angle_deg);
-    const size_t blocks = (nv + kBlock - 1) / kBlock;
-    std::vector<EdgeBends> partial(blocks);
-    parallel_for_chunks(
-        blocks,
-        [&](size_t first, size_t last) {
-            std::vector<uint64_t> keys;
-            for (size_t b = first; b < last; ++b)
-                for (size_t v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v) {
-                    // The faces around a vertex lie anywhere in the mesh: fetch those of the vertex a few
-                    // ahead now, or every face and normal read waits for memory.
-                    for (uint32_t k = vf.begin(v) + kAhead; k < vf.end(v) + kAhead && k < vf.corners.size(); ++k) {
-                        __builtin_prefetch(&mesh.faces[vf.corners[k] / 3]);
-                        __builtin_prefetch(&normals[vf.corners[k] / 3]);
-                    }
-                    bends_at(mesh, vf, v, limits, [&](uint32_t f) { return normals[f]; }, keys, partial[b]);
-                }
-        },
-        1);
-    return join(partial);
+    return in_blocks(nv, kBlock, [&](size_t v, std::vector<uint64_t>& keys, EdgeBends& out) {
+        // The faces around a vertex lie anywhere in the mesh: fetch those of the vertex a few
+        // ahead now, or every face and normal read waits for memory.
+        for (uint32_t k = vf.begin(v) + kAhead; k < vf.end(v) + kAhead && k < vf.corners.size(); ++k) {
+            __builtin_prefetch(&mesh.faces[vf.corners[k] / 3]);
+            __builtin_prefetch(&normals[vf.corners[k] / 3]);
+        }
+        bends_at(mesh, vf, v, limits, [&](uint32_t f) { return normals[f]; }, keys, out);
+    });
 }
 
 EdgeBends measure_edge_bends_at(const Mesh& mesh, const VertexFaces& vf, float angle_deg,
@@ -135,24 +139,12 @@ EdgeBends measure_edge_bends_at(const Mesh& mesh, const VertexFaces& vf, float a
     const BendLimits limits(angle_deg);
     const auto normal = [&](uint32_t f) { return face_normal(mesh, mesh.faces[f]); };  // valid faces only
     constexpr size_t kListBlock = 1024;
-    const size_t n = vertices.size(), blocks = (n + kListBlock - 1) / kListBlock;
-    if (per_vertex) per_vertex->assign(n, glm::uvec2(0));
-    std::vector<EdgeBends> partial(blocks);
-    parallel_for_chunks(
-        blocks,
-        [&](size_t first, size_t last) {
-            std::vector<uint64_t> keys;
-            for (size_t b = first; b < last; ++b)
-                for (size_t i = b * kListBlock; i < std::min(n, (b + 1) * kListBlock); ++i) {
-                    EdgeBends& out = partial[b];
-                    const size_t interior = out.interior, between = out.between;
-                    bends_at(mesh, vf, vertices[i], limits, normal, keys, out);
-                    if (per_vertex)
-                        (*per_vertex)[i] = {uint32_t(out.interior - interior), uint32_t(out.between - between)};
-                }
-        },
-        1);
-    return join(partial);
+    if (per_vertex) per_vertex->assign(vertices.size(), glm::uvec2(0));
+    return in_blocks(vertices.size(), kListBlock, [&](size_t i, std::vector<uint64_t>& keys, EdgeBends& out) {
+        const size_t interior = out.interior, between = out.between;
+        bends_at(mesh, vf, vertices[i], limits, normal, keys, out);
+        if (per_vertex) (*per_vertex)[i] = {uint32_t(out.interior - interior), uint32_t(out.between - between)};
+    });
 }
 
 }  // namespace kappa
