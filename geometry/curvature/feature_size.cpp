@@ -1,5 +1,6 @@
 #include "feature_size.h"
 
+#include "geometry/mesh/position_bounds.h"
 #include "geometry/parallel/select_value.h"
 
 #include <glm/common.hpp>
@@ -7,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <mutex>
 #include <vector>
 
@@ -16,16 +16,11 @@ namespace kappa {
 float feature_size(const Mesh& mesh, const SurfaceFields& fields) {
     if (mesh.positions.empty()) return 0.0f;
     // Bounding sphere: centre of the bounding box, radius to the farthest vertex
-    // (minima and maxima: the same whatever the order, so in parallel).
+    // (maxima: the same whatever the order, so in parallel).
     const size_t nv = mesh.positions.size();
+    const PositionBounds box = position_bounds(mesh.positions);
+    const glm::vec3 lo = box.lo, hi = box.hi;
     std::mutex merge;
-    glm::vec3 lo = mesh.positions[0], hi = lo;
-    parallel_for_ranges(nv, [&](size_t first, size_t last) {
-        glm::vec3 l(std::numeric_limits<float>::infinity()), h = -l;
-        for (size_t i = first; i < last; ++i) l = glm::min(l, mesh.positions[i]), h = glm::max(h, mesh.positions[i]);
-        std::lock_guard<std::mutex> lock(merge);
-        lo = glm::min(lo, l), hi = glm::max(hi, h);
-    }, 65536);
     const glm::vec3 centre = 0.5f * (lo + hi);
     float radius = 0;
     parallel_for_ranges(nv, [&](size_t first, size_t last) {

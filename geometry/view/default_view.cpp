@@ -1,5 +1,6 @@
 #include "default_view.h"
 
+#include "geometry/mesh/position_bounds.h"
 #include "geometry/parallel/parallel.h"
 #include "geometry/scale/denoise.h"
 
@@ -120,24 +121,9 @@ struct UpEvidence {
 
 UpEvidence up_evidence(const Mesh& mesh, size_t step) {
     UpEvidence e;
-    // The bounds in blocks, in parallel (the least and greatest are the same in any order).
-    constexpr size_t kBlock = 65536;
-    const size_t nv = mesh.positions.size();
-    std::vector<std::pair<glm::dvec3, glm::dvec3>> bounds((nv + kBlock - 1) / kBlock,
-                                                          {glm::dvec3(INFINITY), glm::dvec3(-INFINITY)});
-    parallel_for_chunked(
-        bounds.size(),
-        [&](size_t b) {
-            auto& [lo, hi] = bounds[b];
-            for (size_t v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v) {
-                const glm::vec3 p = mesh.positions[v];
-                if (std::isfinite(p.x + p.y + p.z)) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
-            }
-        },
-        1);
-    glm::dvec3 lo(INFINITY), hi(-INFINITY);
-    for (const auto& [block_lo, block_hi] : bounds) lo = glm::min(lo, block_lo), hi = glm::max(hi, block_hi);
-    if (!(lo.x <= hi.x)) return e;
+    const PositionBounds box = position_bounds(mesh.positions);
+    if (box.empty()) return e;
+    const glm::dvec3 lo(box.lo), hi(box.hi);
     const glm::dvec3 size = hi - lo;
     for (int k = 0; k < 3; ++k) e.extent[k] = size[k];
     const double cos_flat = std::cos(glm::radians(5.0));

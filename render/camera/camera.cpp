@@ -1,5 +1,6 @@
 #include "render/camera/camera.h"
 
+#include "geometry/mesh/position_bounds.h"
 #include "geometry/parallel/parallel.h"
 #include "geometry/view/default_view.h"
 
@@ -17,20 +18,15 @@ namespace kappa::render {
 
 BoundingSphere bounding_sphere(const Mesh& mesh) {
     if (mesh.positions.empty()) return {};
-    // In blocks, in parallel: least, greatest and largest are the same in any order.
+    // The radius in blocks, in parallel: the largest is the same in any order.
     constexpr size_t kBlock = 65536;
     const size_t n = mesh.positions.size(), blocks = (n + kBlock - 1) / kBlock;
     auto each_block = [&](auto&& body) {
         parallel_for_chunked(blocks, [&](size_t b) { body(b, b * kBlock, std::min(n, (b + 1) * kBlock)); }, 1);
     };
-    std::vector<std::pair<glm::vec3, glm::vec3>> bounds(blocks, {mesh.positions[0], mesh.positions[0]});
-    each_block([&](size_t b, size_t first, size_t last) {
-        auto& [lo, hi] = bounds[b];
-        for (size_t v = first; v < last; ++v)
-            lo = glm::min(lo, mesh.positions[v]), hi = glm::max(hi, mesh.positions[v]);
-    });
-    glm::vec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
-    for (const auto& [block_lo, block_hi] : bounds) lo = glm::min(lo, block_lo), hi = glm::max(hi, block_hi);
+    const PositionBounds box = position_bounds(mesh.positions);
+    if (box.empty()) return {};
+    const glm::vec3 lo = box.lo, hi = box.hi;
     BoundingSphere s;
     s.center = glm::vec3(0.5 * (glm::dvec3(lo) + glm::dvec3(hi)));
     std::vector<double> r2(blocks, 0.0);  // in double: squares of coordinates near 1e20 overflow float

@@ -1,0 +1,21 @@
+// The axis-aligned bounds of a mesh's points, in parallel blocks: the least
+// and greatest coordinates are the same in any order, so the bounds do not
+// depend on the thread count.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <limits>
+#include <vector>
+
+namespace kappa {
+
+struct PositionBounds {
+    glm::vec3 lo{std::numeric_limits<float>::infinity()}, hi{-std::numeric_limits<float>::infinity()};
+    bool empty() const { return !(lo.x <= hi.x); }  // no finite point
+};
+
+// Points with a non-finite coordinate are left out.
+PositionBounds position_bounds(const std::vector<glm::vec3>& positions);
+
+}  // namespace kappa
