@@ -70,15 +70,15 @@ void CreaseCandidates::add_face(const Face& face, glm::vec3 cross, size_t block)
 uint32_t CreaseCandidates::store_reference(uint32_t v, glm::vec3 direction, size_t block) {
     const uint32_t packed = pack(direction);
     reference_[v].store(packed, std::memory_order_relaxed);
-    std::vector<uint64_t>& stores = stored_[block];
+    std::vector<uint64_t>& stores = stored_[block].list;
     if (stores.capacity() == 0) stores.reserve(32768);  // about the vertices a block meets first
     stores.push_back(uint64_t(v) << 32 | packed);
     return packed;
 }
 
 std::vector<uint32_t> CreaseCandidates::vertices() {
-    for (const std::vector<uint64_t>& stores : stored_)
-        for (const uint64_t s : stores)
+    for (const Stores& stores : stored_)
+        for (const uint64_t s : stores.list)
             if (reference_[s >> 32].load(std::memory_order_relaxed) != uint32_t(s))  // overwritten
                 candidate_[s >> 32].store(1, std::memory_order_relaxed);
     std::vector<uint32_t> out;

@@ -55,7 +55,12 @@ private:
     float cos2_half_;  // the squared cosine of the half angle less the margin
     std::unique_ptr<std::atomic<uint32_t>[]> reference_;  // packed r, 0 while none
     std::unique_ptr<std::atomic<uint8_t>[]> candidate_;
-    std::vector<std::vector<uint64_t>> stored_;  // per block: (vertex << 32 | packed r) it stored
+    // Per block: (vertex << 32 | packed r) it stored. A cache line each: two threads appending to
+    // neighbouring blocks' lists would otherwise pass one line to and fro at every store.
+    struct alignas(64) Stores {
+        std::vector<uint64_t> list;
+    };
+    std::vector<Stores> stored_;
 };
 
 }  // namespace kappa

@@ -21,9 +21,11 @@ glm::dvec3 vertex_centroid(const Mesh& mesh) {
     parallel_for_chunks(
         partial.size(),
         [&](size_t first, size_t last) {
-            for (size_t b = first; b < last; ++b)
-                for (size_t v = b * kBlock; v < std::min(n, (b + 1) * kBlock); ++v)
-                    partial[b] += glm::dvec3(mesh.positions[v]);
+            for (size_t b = first; b < last; ++b) {
+                glm::dvec3 sum(0.0);  // in a register, not stored at every point
+                for (size_t v = b * kBlock; v < std::min(n, (b + 1) * kBlock); ++v) sum += glm::dvec3(mesh.positions[v]);
+                partial[b] = sum;
+            }
         },
         1);
     glm::dvec3 sum(0.0);
