@@ -44,16 +44,18 @@ public:
     CreaseCandidates(size_t vertex_count, float angle_deg, size_t blocks);
     // Takes in a valid face (is_valid_face) of `block` and its face_cross (creases.h).
     void add_face(const Face& face, glm::vec3 cross, size_t block);
+    // Asks for vertex v's reference to be fetched (a face's corners some faces ahead).
+    void prefetch(uint32_t v) const { __builtin_prefetch(&reference_[v]); }
     // The candidates, in increasing order, once every face is in.
     std::vector<uint32_t> vertices();
 
 private:
-    uint32_t store_reference(uint32_t v, glm::vec3 direction, size_t block);
+    uint16_t store_reference(uint32_t v, glm::vec3 direction, size_t block);
 
     size_t vertex_count_;
     bool everywhere_;   // no margin left: every vertex is a candidate
     float cos2_half_;  // the squared cosine of the half angle less the margin
-    std::unique_ptr<std::atomic<uint32_t>[]> reference_;  // packed r, 0 while none
+    std::unique_ptr<std::atomic<uint16_t>[]> reference_;  // packed r, 0 while none
     std::unique_ptr<std::atomic<uint8_t>[]> candidate_;
     // Per block: (vertex << 32 | packed r) it stored. A cache line each: two threads appending to
     // neighbouring blocks' lists would otherwise pass one line to and fro at every store.
