@@ -5,7 +5,9 @@
 // (the scale space's levels fitted on demand) and for later views (levels
 // fitted), next to the curvature job (compute_surface_fields, as
 // `kappa curvature` runs it). Each later view is the previous one turned
-// 10 degrees about the model's up axis, as an orbit in the viewer.
+// 10 degrees about the model's up axis, as an orbit in the viewer: without and
+// then with the levels' values at the vertices kept, as the viewer keeps them
+// from its second view on.
 // Medians of wall and process CPU time (time_it.h).
 //
 //   build/bench_view_fields [MESH] [--runs N] [--threads N] [--detail PX] [--size WxH] [--views-only]
@@ -89,10 +91,17 @@ int main(int argc, char** argv) {
         (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters);
     });
     if (views_only) (void)render::detail_fields(mesh, source, raw, camera, height, detail);  // the levels it needs
-    bench::time_it("new view (levels fitted)", runs, [&] {
+    auto new_view = [&] {
         next_view();
         const render::DetailFields d = render::detail_fields(mesh, source, raw, camera, height, detail);
         (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters);
-    });
+    };
+    bench::time_it("new view (levels fitted)", runs, new_view);
+    // As app/mesh_drawing.cpp from its second view on: the levels' values at the vertices kept
+    // (geometry/scale/level_value_cache.h), filled by one view, read by the next ones.
+    source.space.value_cache.enable(true);
+    bench::time_it("  the view that keeps them", 1, new_view);
+    bench::time_it("new view (values kept)", runs, new_view);
+    std::printf("  values kept: %.0f MB\n", double(source.space.value_cache.bytes()) / 1e6);
     return 0;
 }

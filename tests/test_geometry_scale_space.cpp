@@ -292,6 +292,56 @@ TEST_CASE("Fields at a scale do not depend on the thread count", "[scale-space]"
     }
 }
 
+TEST_CASE("Fields at a scale are the same, bit for bit, with the levels' values at the vertices kept",
+          "[scale-space]") {
+    // Views of varying scales, in pieces as a page blends them: each with a fresh space (nothing kept)
+    // and with one space that keeps the values from view to view (level_value_cache.h), also when
+    // its budget holds fewer levels than the views read.
+    Mesh mesh = make_torus(1.0f, 0.3f, 150, 50);
+    add_normal_noise(mesh, 0.002f, 4);
+    const SurfaceFields raw = compute_surface_fields(mesh);
+    auto view_sigma = [&](int view) {
+        std::vector<float> sigma(mesh.vertex_count());
+        for (size_t v = 0; v < sigma.size(); ++v)
+            sigma[v] = (0.004f + 0.03f * float(view)) * (1.2f + mesh.positions[v].x);  // levels 0 to about 4
+        return sigma;
+    };
+    auto blended = [&](ScaleSpace& space, const std::vector<float>& sigma) {
+        fit_levels(mesh, space, raw, levels_to_fit(space, sigma));
+        SurfaceFields out = fields_to_blend(mesh, raw);
+        for (size_t first = 0; first < mesh.vertex_count(); first += 1000)
+            blend_fields(mesh, space, raw, sigma, first, std::min(first + 1000, mesh.vertex_count()), out);
+        return out;
+    };
+    REQUIRE(build_scale_space(mesh).levels.size() >= 3);
+    const size_t level_bytes = mesh.vertex_count() * (sizeof(LevelValueCache::Entry) + 1);
+    for (const size_t budget : {LevelValueCache::default_budget_bytes(), level_bytes, level_bytes / 2})
+    for (int pass = 0; pass < 2; ++pass)  // the second pass reads back what the first kept
+        for (int view = 0; view < 4; ++view) {
+            INFO("budget " << budget << ", pass " << pass << ", view " << view);
+            static ScaleSpace kept;
+            if (pass == 0 && view == 0) {
+                kept = build_scale_space(mesh);
+                kept.value_cache.enable(true);
+                kept.value_cache.set_budget_bytes(budget);
+            }
+            const std::vector<float> sigma = view_sigma(view);
+            ScaleSpace fresh = build_scale_space(mesh);
+            const SurfaceFields expected = blended(fresh, sigma), got = blended(kept, sigma);
+            CHECK(got.normals == expected.normals);
+            CHECK(got.k1 == expected.k1);
+            CHECK(got.k2 == expected.k2);
+            CHECK(got.d1 == expected.d1);
+            CHECK(got.d2 == expected.d2);
+            CHECK(got.dcurv == expected.dcurv);
+            if (view > 0) CHECK((kept.value_cache.bytes() > 0) == (budget >= level_bytes));  // view 0: raw only
+            CHECK(kept.value_cache.bytes() <= budget);
+            // A copy of the space keeps nothing (and blends the same).
+            const ScaleSpace copy = kept;
+            CHECK(copy.value_cache.bytes() == 0);
+        }
+}
+
 TEST_CASE("Degenerate input gives finite fields at every scale", "[scale-space]") {
     // A torus with an isolated vertex, a zero-area face, a tiny separate
     // triangle and a duplicated vertex position.

@@ -73,6 +73,32 @@ bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint
     return out.weight > 0 && glm::length(out.normal_sum) > 0;
 }
 
+// level_value for the curvature blend through the space's cache (level_value_cache.h): computed and
+// kept on a vertex's first blend at the level, read back after.
+bool cached_level_value(const ScaleSpace& space, size_t l, uint32_t v, const glm::vec3& p, LevelValue& out) {
+    uint8_t* states = space.value_cache.states(l);
+    if (!states) return level_value<Blend::Tensors>(space.clusters[l], space.levels[l], v, p, out);
+    LevelValueCache::Entry& e = space.value_cache.entries(l)[v];
+    if (states[v] == LevelValueCache::Unknown) {
+        const bool usable = level_value<Blend::Tensors>(space.clusters[l], space.levels[l], v, p, out);
+        if (usable) {
+            e.weight = out.weight;
+            for (int k = 0; k < 3; ++k) e.normal_sum[k] = out.normal_sum[k];
+            std::copy(out.curvature.m, out.curvature.m + 6, e.curvature);
+            std::copy(out.dcurv.c, out.dcurv.c + 10, e.dcurv);
+        }
+        states[v] = usable ? LevelValueCache::Usable : LevelValueCache::Unusable;
+        return usable;
+    }
+    if (states[v] == LevelValueCache::Unusable) return false;
+    out = LevelValue{};
+    out.weight = e.weight;
+    out.normal_sum = {e.normal_sum[0], e.normal_sum[1], e.normal_sum[2]};
+    std::copy(e.curvature, e.curvature + 6, out.curvature.m);
+    std::copy(e.dcurv, e.dcurv + 10, out.dcurv.c);
+    return true;
+}
+
 // Level coordinate of a scale: -1 for the raw estimate, l for level l,
 // linear in log sigma in between; clamped to the top level.
 float level_coordinate(const ScaleSpace& space, float sigma) {
@@ -109,8 +135,10 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
         b.use[i] = false;
         if (b.share[i] <= 0.0f) continue;
         if (l >= 0 && space.levels[size_t(l)].fitted() &&
-            level_value<kBlend>(space.clusters[size_t(l)], space.levels[size_t(l)], uint32_t(v),
-                                  mesh.positions[v], b.value[i])) {
+            (kBlend == Blend::Tensors
+                 ? cached_level_value(space, size_t(l), uint32_t(v), mesh.positions[v], b.value[i])
+                 : level_value<kBlend>(space.clusters[size_t(l)], space.levels[size_t(l)], uint32_t(v),
+                                       mesh.positions[v], b.value[i]))) {
             b.use[i] = true;
             n += b.share[i] * glm::normalize(b.value[i].normal_sum);
         } else {
@@ -253,6 +281,16 @@ SurfaceFields fields_to_blend(const Mesh& mesh, const SurfaceFields& raw) {
 
 void blend_fields(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
                   const std::vector<float>& sigma, size_t first, size_t last, SurfaceFields& out) {
+    if (space.value_cache.enabled() && first < last && !space.levels.empty()) {  // room for the levels read
+        const auto [lo, hi] = std::minmax_element(sigma.begin() + long(first), sigma.begin() + long(last));
+        if (std::isfinite(*lo) && std::isfinite(*hi)) {
+            std::vector<bool> fitted(space.levels.size());
+            for (size_t l = 0; l < fitted.size(); ++l) fitted[l] = space.levels[l].fitted();
+            const int from = std::max(0, int(std::floor(level_coordinate(space, *lo))));
+            const int to = int(std::floor(level_coordinate(space, *hi))) + 1;
+            if (to >= from) space.value_cache.prepare(space.levels.size(), mesh.vertex_count(), size_t(from), size_t(to), fitted);
+        }
+    }
     const bool has_raw = raw.has_curvature();
     parallel_for(last - first, [&](size_t k) {
         const size_t v = first + k;

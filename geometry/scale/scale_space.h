@@ -26,6 +26,7 @@
 #include "geometry/mesh/mesh.h"
 #include "geometry/surface_fields.h"
 #include "level_fit.h"
+#include "level_value_cache.h"
 #include "surface_clusters.h"
 
 #include <glm/vec4.hpp>
@@ -44,6 +45,9 @@ struct ScaleSpace {
     glm::vec3 origin{0};    // where the grids' cells are aligned
     std::vector<ClusterLevel> clusters;    // one per level (built on demand)
     std::vector<ScaleLevelFields> levels;  // one per level (fitted on demand)
+    // The curvature blend's value of each level at each vertex, kept when enabled
+    // (level_value_cache.h): a cache, filled by blends that read the space.
+    mutable LevelValueCache value_cache;
 
     bool empty() const { return levels.empty(); }
     float level_scale(size_t level) const { return std::ldexp(first_cell, int(level)); }

@@ -1,0 +1,70 @@
+// The curvature blend's value of each fitted level at each vertex
+// (scale_space.cpp's level_value: the kernel-weighted sums over the vertex's
+// cluster and the adjacent ones), kept once computed. They depend on the
+// level and the vertex alone, not on the scale a view asks of the vertex: a
+// new view of the same mesh blends them again without going back to the
+// clusters, which lie all over memory and cost most of a view's fields
+// (issue 30: a new view of a 17.8M-face mesh). 80 bytes a vertex a level;
+// levels are kept within a memory budget, the least recently used dropped
+// first. Off until enabled: a single drawing would only pay for it.
+//
+// One blend at a time; within a blend each vertex's entries are written by
+// the one thread that blends it. The entries assume the space is always
+// blended with the mesh and raw fields it was built from (as ScaleSpace
+// does).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace kappa {
+
+class LevelValueCache {
+public:
+    struct Entry {  // level_value's sums, as it leaves them
+        float weight;
+        float normal_sum[3];
+        float curvature[6];
+        float dcurv[10];
+    };
+    enum State : uint8_t { Unknown = 0, Usable = 1, Unusable = 2 };
+
+    LevelValueCache() = default;
+    LevelValueCache(const LevelValueCache& other)  // a copy starts empty
+        : enabled_(other.enabled_), budget_(other.budget_) {}
+    LevelValueCache& operator=(const LevelValueCache& other);
+    LevelValueCache(LevelValueCache&&) noexcept = default;
+    LevelValueCache& operator=(LevelValueCache&&) noexcept = default;
+
+    void enable(bool on);
+    bool enabled() const { return enabled_; }
+
+    // Before a blend over `vertices` vertices that reads levels first..last (of `levels`): makes room
+    // for those that `fitted` says are fitted, dropping others beyond the budget, least recently used
+    // first. Levels left without room are blended as if there were no cache.
+    void prepare(size_t levels, size_t vertices, size_t first, size_t last, const std::vector<bool>& fitted);
+    // The level's entries and their states (one a vertex), or null when it has none.
+    Entry* entries(size_t level) const { return level < levels_.size() ? levels_[level].entries.get() : nullptr; }
+    uint8_t* states(size_t level) const { return level < levels_.size() ? levels_[level].states.get() : nullptr; }
+
+    size_t bytes() const;
+    static size_t default_budget_bytes();
+    size_t budget_bytes() const { return budget_; }
+    void set_budget_bytes(size_t budget) { budget_ = budget; }
+
+private:
+    struct Level {
+        std::unique_ptr<Entry[]> entries;  // uninitialised where the state is Unknown
+        std::unique_ptr<uint8_t[]> states;
+        uint64_t used = 0;
+    };
+    bool enabled_ = false;
+    size_t budget_ = default_budget_bytes();
+    size_t vertices_ = 0;
+    uint64_t clock_ = 0;
+    std::vector<Level> levels_;
+};
+
+}  // namespace kappa
