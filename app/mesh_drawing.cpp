@@ -103,7 +103,7 @@ bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera&
         }
         // From the second view on (an orbit, a turntable), the levels' values at the vertices are kept
         // for the views after it (geometry/scale/level_value_cache.h); a single drawing does without.
-        if (uploaded_) detail_source_.space.value_cache.enable(true);
+        if (uploaded_) detail_source_.space.keep_level_values(true);
         p->job = std::make_unique<render::DetailFieldsJob>(mesh, detail_source_, fields_, p->scales, chunk);
     }
     if (!p->job->done()) {

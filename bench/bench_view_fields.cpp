@@ -96,12 +96,17 @@ int main(int argc, char** argv) {
         const render::DetailFields d = render::detail_fields(mesh, source, raw, camera, height, detail);
         (void)render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, clusters);
     };
-    bench::time_it("new view (levels fitted)", runs, new_view);
-    // As app/mesh_drawing.cpp from its second view on: the levels' values at the vertices kept
-    // (geometry/scale/level_value_cache.h), filled by one view, read by the next ones.
-    source.space.value_cache.enable(true);
-    bench::time_it("  the view that keeps them", 1, new_view);
-    bench::time_it("new view (values kept)", runs, new_view);
-    std::printf("  values kept: %.0f MB\n", double(source.space.value_cache.bytes()) / 1e6);
+    // Without, then (as app/mesh_drawing.cpp from its second view on) with the levels' values at the
+    // vertices kept (geometry/scale/level_value_cache.h): filled by one view, read by the next ones.
+    // Twice, alternating, as the views turn on.
+    for (int round = 0; round < 2; ++round) {
+        source.space.keep_level_values(false);
+        bench::time_it("new view (levels fitted)", runs, new_view);
+        source.space.keep_level_values(true);
+        bench::time_it("  the view that keeps them", 1, new_view);
+        bench::time_it("new view (values kept)", runs, new_view);
+        std::printf("  values kept: %.0f MB\n",
+                    double(source.space.tensor_values.bytes() + source.space.surface_values.bytes()) / 1e6);
+    }
     return 0;
 }

@@ -292,54 +292,62 @@ TEST_CASE("Fields at a scale do not depend on the thread count", "[scale-space]"
     }
 }
 
-TEST_CASE("Fields at a scale are the same, bit for bit, with the levels' values at the vertices kept",
+TEST_CASE("Fields and surface at a scale are the same, bit for bit, with the levels' values at the vertices kept",
           "[scale-space]") {
     // Views of varying scales, in pieces as a page blends them: each with a fresh space (nothing kept)
     // and with one space that keeps the values from view to view (level_value_cache.h), also when
-    // its budget holds fewer levels than the views read.
+    // the budgets hold one level or none.
     Mesh mesh = make_torus(1.0f, 0.3f, 150, 50);
     add_normal_noise(mesh, 0.002f, 4);
     const SurfaceFields raw = compute_surface_fields(mesh);
     auto view_sigma = [&](int view) {
         std::vector<float> sigma(mesh.vertex_count());
         for (size_t v = 0; v < sigma.size(); ++v)
-            sigma[v] = (0.004f + 0.03f * float(view)) * (1.2f + mesh.positions[v].x);  // levels 0 to about 4
+            sigma[v] = (0.004f + 0.03f * float(view)) * (1.2f + mesh.positions[v].x);  // up to the top level
         return sigma;
+    };
+    struct Blended {
+        SurfaceFields fields;
+        SurfaceAtScale surface;
     };
     auto blended = [&](ScaleSpace& space, const std::vector<float>& sigma) {
         fit_levels(mesh, space, raw, levels_to_fit(space, sigma));
-        SurfaceFields out = fields_to_blend(mesh, raw);
-        for (size_t first = 0; first < mesh.vertex_count(); first += 1000)
-            blend_fields(mesh, space, raw, sigma, first, std::min(first + 1000, mesh.vertex_count()), out);
+        Blended out{fields_to_blend(mesh, raw), {mesh.positions, raw.normals}};
+        for (size_t first = 0; first < mesh.vertex_count(); first += 1000) {
+            const size_t last = std::min(first + 1000, mesh.vertex_count());
+            blend_fields(mesh, space, raw, sigma, first, last, out.fields);
+            blend_surface(mesh, space, raw, sigma, first, last, out.surface);
+        }
         return out;
     };
     REQUIRE(build_scale_space(mesh).levels.size() >= 3);
-    const size_t level_bytes = mesh.vertex_count() * (sizeof(LevelValueCache::Entry) + 1);
-    for (const size_t budget : {LevelValueCache::default_budget_bytes(), level_bytes, level_bytes / 2})
-    for (int pass = 0; pass < 2; ++pass)  // the second pass reads back what the first kept
-        for (int view = 0; view < 4; ++view) {
-            INFO("budget " << budget << ", pass " << pass << ", view " << view);
-            static ScaleSpace kept;
-            if (pass == 0 && view == 0) {
-                kept = build_scale_space(mesh);
-                kept.value_cache.enable(true);
-                kept.value_cache.set_budget_bytes(budget);
+    for (const double levels_budgeted : {1000.0, 1.0, 0.5}) {
+        ScaleSpace kept = build_scale_space(mesh);
+        kept.keep_level_values(true);
+        for (LevelValueCache* cache : {&kept.tensor_values, &kept.surface_values})
+            cache->set_budget_bytes(size_t(levels_budgeted * double(cache->level_bytes(mesh.vertex_count()))));
+        for (int pass = 0; pass < 2; ++pass)  // the second pass reads back what the first kept
+            for (int view = 0; view < 4; ++view) {
+                INFO("levels budgeted " << levels_budgeted << ", pass " << pass << ", view " << view);
+                const std::vector<float> sigma = view_sigma(view);
+                ScaleSpace fresh = build_scale_space(mesh);
+                const Blended expected = blended(fresh, sigma), got = blended(kept, sigma);
+                CHECK(got.fields.normals == expected.fields.normals);
+                CHECK(got.fields.k1 == expected.fields.k1);
+                CHECK(got.fields.k2 == expected.fields.k2);
+                CHECK(got.fields.d1 == expected.fields.d1);
+                CHECK(got.fields.d2 == expected.fields.d2);
+                CHECK(got.fields.dcurv == expected.fields.dcurv);
+                CHECK(got.surface.positions == expected.surface.positions);
+                CHECK(got.surface.normals == expected.surface.normals);
+                for (const LevelValueCache* cache : {&kept.tensor_values, &kept.surface_values}) {
+                    if (view > 0) CHECK((cache->bytes() > 0) == (levels_budgeted >= 1));  // view 0: raw only
+                    CHECK(cache->bytes() <= cache->budget_bytes());
+                }
+                const ScaleSpace copy = kept;  // keeps nothing
+                CHECK(copy.tensor_values.bytes() + copy.surface_values.bytes() == 0);
             }
-            const std::vector<float> sigma = view_sigma(view);
-            ScaleSpace fresh = build_scale_space(mesh);
-            const SurfaceFields expected = blended(fresh, sigma), got = blended(kept, sigma);
-            CHECK(got.normals == expected.normals);
-            CHECK(got.k1 == expected.k1);
-            CHECK(got.k2 == expected.k2);
-            CHECK(got.d1 == expected.d1);
-            CHECK(got.d2 == expected.d2);
-            CHECK(got.dcurv == expected.dcurv);
-            if (view > 0) CHECK((kept.value_cache.bytes() > 0) == (budget >= level_bytes));  // view 0: raw only
-            CHECK(kept.value_cache.bytes() <= budget);
-            // A copy of the space keeps nothing (and blends the same).
-            const ScaleSpace copy = kept;
-            CHECK(copy.value_cache.bytes() == 0);
-        }
+    }
 }
 
 TEST_CASE("Degenerate input gives finite fields at every scale", "[scale-space]") {

@@ -7,7 +7,7 @@ namespace kappa {
 LevelValueCache& LevelValueCache::operator=(const LevelValueCache& other) {
     if (this != &other) {
         levels_.clear();
-        enabled_ = other.enabled_, budget_ = other.budget_;
+        floats_ = other.floats_, enabled_ = other.enabled_, budget_ = other.budget_;
     }
     return *this;
 }
@@ -21,14 +21,14 @@ size_t LevelValueCache::default_budget_bytes() {
 #ifdef __EMSCRIPTEN__
     return size_t(256) << 20;  // a page's whole memory is a few GiB at most
 #else
-    return size_t(5) << 29;  // 2.5 GiB: three levels of a 9M-vertex mesh
+    return size_t(5) << 29;  // 2.5 GiB: three levels of the curvature blend's for a 9M-vertex mesh
 #endif
 }
 
 size_t LevelValueCache::bytes() const {
     size_t kept = 0;
     for (const Level& l : levels_)
-        if (l.entries) kept += vertices_ * (sizeof(Entry) + 1);
+        if (l.values) kept += level_bytes(vertices_);
     return kept;
 }
 
@@ -41,22 +41,22 @@ void LevelValueCache::prepare(size_t levels, size_t vertices, size_t first, size
         vertices_ = vertices;
     }
     ++clock_;
-    const size_t per_level = vertices * (sizeof(Entry) + 1);
+    const size_t per_level = level_bytes(vertices);
     for (size_t l = first; l <= last && l < levels; ++l) {
         if (!fitted[l]) continue;
         Level& level = levels_[l];
         level.used = clock_;
-        if (level.entries) continue;
+        if (level.values) continue;
         // Room: drop the least recently used levels this blend does not read.
         while (bytes() + per_level > budget_) {
             Level* oldest = nullptr;
             for (Level& other : levels_)
-                if (other.entries && other.used < clock_ && (!oldest || other.used < oldest->used)) oldest = &other;
+                if (other.values && other.used < clock_ && (!oldest || other.used < oldest->used)) oldest = &other;
             if (!oldest) break;
-            oldest->entries.reset(), oldest->states.reset();
+            oldest->values.reset(), oldest->states.reset();
         }
         if (bytes() + per_level > budget_) continue;  // blended without the cache
-        level.entries.reset(new Entry[vertices]);            // left uninitialised: the states say
+        level.values.reset(new float[vertices * floats_]);  // left uninitialised: the states say
         level.states.reset(new uint8_t[vertices]());
     }
 }

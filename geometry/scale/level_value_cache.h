@@ -1,15 +1,15 @@
-// The curvature blend's value of each fitted level at each vertex
-// (scale_space.cpp's level_value: the kernel-weighted sums over the vertex's
-// cluster and the adjacent ones), kept once computed. They depend on the
-// level and the vertex alone, not on the scale a view asks of the vertex: a
-// new view of the same mesh blends them again without going back to the
-// clusters, which lie all over memory and cost most of a view's fields
-// (issue 30: a new view of a 17.8M-face mesh). 80 bytes a vertex a level;
-// levels are kept within a memory budget, the least recently used dropped
-// first. Off until enabled: a single drawing would only pay for it.
+// A blend's value of each fitted level at each vertex (scale_space.cpp's
+// level_value: the kernel-weighted sums over the vertex's cluster and the
+// adjacent ones, the curvature blend's or the surface's), kept once
+// computed. They depend on the level and the vertex alone, not on the scale
+// a view asks of the vertex: a new view of the same mesh blends them again
+// without going back to the clusters (issue 30: a new view of a 17.8M-face
+// mesh). 81 bytes a vertex a level for the curvature blend, 33 for the
+// surface's; levels are kept within a memory budget, the least recently used
+// dropped first. Off until enabled: a single drawing would only pay for it.
 //
-// One blend at a time; within a blend each vertex's entries are written by
-// the one thread that blends it. The entries assume the space is always
+// One blend at a time; within a blend each vertex's values are written by
+// the one thread that blends it. The values assume the space is always
 // blended with the mesh and raw fields it was built from (as ScaleSpace
 // does).
 #pragma once
@@ -23,17 +23,12 @@ namespace kappa {
 
 class LevelValueCache {
 public:
-    struct Entry {  // level_value's sums, as it leaves them
-        float weight;
-        float normal_sum[3];
-        float curvature[6];
-        float dcurv[10];
-    };
     enum State : uint8_t { Unknown = 0, Usable = 1, Unusable = 2 };
 
-    LevelValueCache() = default;
+    // Each vertex's value is `floats` floats.
+    explicit LevelValueCache(size_t floats = 0) : floats_(floats) {}
     LevelValueCache(const LevelValueCache& other)  // a copy starts empty
-        : enabled_(other.enabled_), budget_(other.budget_) {}
+        : floats_(other.floats_), enabled_(other.enabled_), budget_(other.budget_) {}
     LevelValueCache& operator=(const LevelValueCache& other);
     LevelValueCache(LevelValueCache&&) noexcept = default;
     LevelValueCache& operator=(LevelValueCache&&) noexcept = default;
@@ -45,21 +40,23 @@ public:
     // for those that `fitted` says are fitted, dropping others beyond the budget, least recently used
     // first. Levels left without room are blended as if there were no cache.
     void prepare(size_t levels, size_t vertices, size_t first, size_t last, const std::vector<bool>& fitted);
-    // The level's entries and their states (one a vertex), or null when it has none.
-    Entry* entries(size_t level) const { return level < levels_.size() ? levels_[level].entries.get() : nullptr; }
+    // The level's values (`floats` a vertex) and their states (one a vertex), or null when it has none.
+    float* values(size_t level) const { return level < levels_.size() ? levels_[level].values.get() : nullptr; }
     uint8_t* states(size_t level) const { return level < levels_.size() ? levels_[level].states.get() : nullptr; }
 
     size_t bytes() const;
+    size_t level_bytes(size_t vertices) const { return vertices * (floats_ * sizeof(float) + 1); }
     static size_t default_budget_bytes();
     size_t budget_bytes() const { return budget_; }
     void set_budget_bytes(size_t budget) { budget_ = budget; }
 
 private:
     struct Level {
-        std::unique_ptr<Entry[]> entries;  // uninitialised where the state is Unknown
+        std::unique_ptr<float[]> values;  // uninitialised where the state is Unknown
         std::unique_ptr<uint8_t[]> states;
         uint64_t used = 0;
     };
+    size_t floats_ = 0;
     bool enabled_ = false;
     size_t budget_ = default_budget_bytes();
     size_t vertices_ = 0;

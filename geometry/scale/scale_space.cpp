@@ -73,31 +73,57 @@ bool level_value(const ClusterLevel& level, const ScaleLevelFields& fields, uint
     return out.weight > 0 && glm::length(out.normal_sum) > 0;
 }
 
-// level_value for the curvature blend through the space's cache (level_value_cache.h): computed and
-// kept on a vertex's first blend at the level, read back after.
+// A level's value at a vertex as the cache keeps it: the sums the blend reads, 20 floats for the
+// curvature blend, 8 for the surface's.
+template <Blend kBlend>
+void pack_value(const LevelValue& v, float* out) {
+    out[0] = v.weight;
+    for (int k = 0; k < 3; ++k) out[1 + k] = v.normal_sum[k];
+    if (kBlend == Blend::Tensors) {
+        std::copy(v.curvature.m, v.curvature.m + 6, out + 4);
+        std::copy(v.dcurv.c, v.dcurv.c + 10, out + 10);
+    } else {
+        out[4] = v.shift_weight;
+        for (int k = 0; k < 3; ++k) out[5 + k] = v.shift_sum[k];
+    }
+}
+
+template <Blend kBlend>
+void unpack_value(const float* in, LevelValue& v) {
+    v = LevelValue{};
+    v.weight = in[0];
+    v.normal_sum = {in[1], in[2], in[3]};
+    if (kBlend == Blend::Tensors) {
+        std::copy(in + 4, in + 10, v.curvature.m);
+        std::copy(in + 10, in + 20, v.dcurv.c);
+    } else {
+        v.shift_weight = in[4];
+        v.shift_sum = {in[5], in[6], in[7]};
+    }
+}
+
+// level_value through the space's cache for this blend (level_value_cache.h): computed and kept on a
+// vertex's first blend at the level, read back after.
+template <Blend kBlend>
 bool cached_level_value(const ScaleSpace& space, size_t l, uint32_t v, const glm::vec3& p, LevelValue& out) {
-    uint8_t* states = space.value_cache.states(l);
-    if (!states) return level_value<Blend::Tensors>(space.clusters[l], space.levels[l], v, p, out);
-    LevelValueCache::Entry& e = space.value_cache.entries(l)[v];
+    const LevelValueCache& cache = kBlend == Blend::Tensors ? space.tensor_values : space.surface_values;
+    uint8_t* states = kBlend == Blend::Normals ? nullptr : cache.states(l);
+    if (!states) return level_value<kBlend>(space.clusters[l], space.levels[l], v, p, out);
+    float* kept = cache.values(l) + size_t(v) * (kBlend == Blend::Tensors ? 20 : 8);
     if (states[v] == LevelValueCache::Unknown) {
-        const bool usable = level_value<Blend::Tensors>(space.clusters[l], space.levels[l], v, p, out);
-        if (usable) {
-            e.weight = out.weight;
-            for (int k = 0; k < 3; ++k) e.normal_sum[k] = out.normal_sum[k];
-            std::copy(out.curvature.m, out.curvature.m + 6, e.curvature);
-            std::copy(out.dcurv.c, out.dcurv.c + 10, e.dcurv);
-        }
+        const bool usable = level_value<kBlend>(space.clusters[l], space.levels[l], v, p, out);
+        if (usable) pack_value<kBlend>(out, kept);
         states[v] = usable ? LevelValueCache::Usable : LevelValueCache::Unusable;
         return usable;
     }
     if (states[v] == LevelValueCache::Unusable) return false;
-    out = LevelValue{};
-    out.weight = e.weight;
-    out.normal_sum = {e.normal_sum[0], e.normal_sum[1], e.normal_sum[2]};
-    std::copy(e.curvature, e.curvature + 6, out.curvature.m);
-    std::copy(e.dcurv, e.dcurv + 10, out.dcurv.c);
+    unpack_value<kBlend>(kept, out);
     return true;
 }
+
+// Before a blend of vertices [first, last) at scales sigma: room in `cache` for the levels it reads.
+void prepare_cache(const Mesh& mesh, const ScaleSpace& space, LevelValueCache& cache, const std::vector<float>& sigma,
+                   size_t first, size_t last);
 
 // Level coordinate of a scale: -1 for the raw estimate, l for level l,
 // linear in log sigma in between; clamped to the top level.
@@ -135,10 +161,7 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
         b.use[i] = false;
         if (b.share[i] <= 0.0f) continue;
         if (l >= 0 && space.levels[size_t(l)].fitted() &&
-            (kBlend == Blend::Tensors
-                 ? cached_level_value(space, size_t(l), uint32_t(v), mesh.positions[v], b.value[i])
-                 : level_value<kBlend>(space.clusters[size_t(l)], space.levels[size_t(l)], uint32_t(v),
-                                       mesh.positions[v], b.value[i]))) {
+            cached_level_value<kBlend>(space, size_t(l), uint32_t(v), mesh.positions[v], b.value[i])) {
             b.use[i] = true;
             n += b.share[i] * glm::normalize(b.value[i].normal_sum);
         } else {
@@ -149,6 +172,18 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
     if (!(len > 0) || !std::isfinite(len)) return false;
     b.normal = n / len;
     return true;
+}
+
+void prepare_cache(const Mesh& mesh, const ScaleSpace& space, LevelValueCache& cache, const std::vector<float>& sigma,
+                   size_t first, size_t last) {
+    if (!cache.enabled() || first >= last || space.levels.empty()) return;
+    const auto [lo, hi] = std::minmax_element(sigma.begin() + long(first), sigma.begin() + long(last));
+    if (!std::isfinite(*lo) || !std::isfinite(*hi)) return;
+    std::vector<bool> fitted(space.levels.size());
+    for (size_t l = 0; l < fitted.size(); ++l) fitted[l] = space.levels[l].fitted();
+    const int from = std::max(0, int(std::floor(level_coordinate(space, *lo))));
+    const int to = int(std::floor(level_coordinate(space, *hi))) + 1;
+    if (to >= from) cache.prepare(space.levels.size(), mesh.vertex_count(), size_t(from), size_t(to), fitted);
 }
 
 // The levels that scales in [lo, hi] blend from and that are not fitted yet.
@@ -281,16 +316,7 @@ SurfaceFields fields_to_blend(const Mesh& mesh, const SurfaceFields& raw) {
 
 void blend_fields(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
                   const std::vector<float>& sigma, size_t first, size_t last, SurfaceFields& out) {
-    if (space.value_cache.enabled() && first < last && !space.levels.empty()) {  // room for the levels read
-        const auto [lo, hi] = std::minmax_element(sigma.begin() + long(first), sigma.begin() + long(last));
-        if (std::isfinite(*lo) && std::isfinite(*hi)) {
-            std::vector<bool> fitted(space.levels.size());
-            for (size_t l = 0; l < fitted.size(); ++l) fitted[l] = space.levels[l].fitted();
-            const int from = std::max(0, int(std::floor(level_coordinate(space, *lo))));
-            const int to = int(std::floor(level_coordinate(space, *hi))) + 1;
-            if (to >= from) space.value_cache.prepare(space.levels.size(), mesh.vertex_count(), size_t(from), size_t(to), fitted);
-        }
-    }
+    prepare_cache(mesh, space, space.tensor_values, sigma, first, last);
     const bool has_raw = raw.has_curvature();
     parallel_for(last - first, [&](size_t k) {
         const size_t v = first + k;
@@ -339,6 +365,7 @@ std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, con
 
 void blend_surface(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
                    const std::vector<float>& sigma, size_t first, size_t last, SurfaceAtScale& out) {
+    prepare_cache(mesh, space, space.surface_values, sigma, first, last);
     parallel_for(last - first, [&](size_t k) {
         const size_t v = first + k;
         VertexBlend b;

@@ -45,9 +45,10 @@ struct ScaleSpace {
     glm::vec3 origin{0};    // where the grids' cells are aligned
     std::vector<ClusterLevel> clusters;    // one per level (built on demand)
     std::vector<ScaleLevelFields> levels;  // one per level (fitted on demand)
-    // The curvature blend's value of each level at each vertex, kept when enabled
-    // (level_value_cache.h): a cache, filled by blends that read the space.
-    mutable LevelValueCache value_cache;
+    // Each level's value at each vertex, the curvature blend's and the surface's, kept when
+    // enabled (level_value_cache.h): caches, filled by the blends that read the space.
+    mutable LevelValueCache tensor_values{20}, surface_values{8};
+    void keep_level_values(bool on) { tensor_values.enable(on), surface_values.enable(on); }
 
     bool empty() const { return levels.empty(); }
     float level_scale(size_t level) const { return std::ldexp(first_cell, int(level)); }
