@@ -27,6 +27,11 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
     return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
+template <typename T>
+bool same_bits(const UninitializedArray<T>& a, const UninitializedArray<T>& b) {
+    return a.size() == b.size() && (a.size() == 0 || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
 bool same_bits(const render::DetailFields& a, const render::DetailFields& b) {
     const SurfaceFields &f = a.fields, &g = b.fields;
     return same_bits(a.mesh.positions, b.mesh.positions) && same_bits(a.mesh.faces, b.mesh.faces) &&

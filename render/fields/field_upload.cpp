@@ -24,7 +24,7 @@ FieldUploadSteps::FieldUploadSteps(const Mesh& mesh, const SurfaceFields& fields
 
     FieldUpload& u = upload_;
     u.feature_size = feature_size;
-    steps_.add_once([&, n] { u.vertices.resize(n); });
+    steps_.add_once([&, n] { u.vertices = UninitializedArray<GpuVertex>(n); });
     steps_.add_chunks(n, chunk, [&, own_fine](size_t first, size_t last) {
         parallel_for(last - first, [&](size_t k) {  // in the clusters' vertex order
             const size_t i = first + k;

@@ -8,6 +8,7 @@
 
 #include "geometry/mesh/creases.h"
 #include "geometry/lines/line_extraction.h"
+#include "geometry/parallel/uninitialized_array.h"
 #include "geometry/culling/face_clusters.h"
 #include "geometry/mesh/mesh.h"
 #include "geometry/parallel/step_queue.h"
@@ -34,7 +35,7 @@ struct GpuVertex {
 static_assert(sizeof(GpuVertex) == 22 * sizeof(float), "GpuVertex must stay 22 packed floats");
 
 struct FieldUpload {
-    std::vector<GpuVertex> vertices;  // in FaceClusters::vertex_order
+    UninitializedArray<GpuVertex> vertices;  // in FaceClusters::vertex_order; filled whole by the threads
     MeshClusters clusters;
     float feature_size = 1;
 };

@@ -118,7 +118,7 @@ void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, f
 }
 
 // The CPU copy of what the shaders read (for CPU line extraction and strokes).
-void MeshBuffers::keep_cpu_copy(const std::vector<GpuVertex>& v) {
+void MeshBuffers::keep_cpu_copy(const UninitializedArray<GpuVertex>& v) {
     const size_t n = v.size();
     SurfaceFields& f = cpu_fields_;
     cpu_mesh_.positions.resize(n);

@@ -110,7 +110,7 @@ public:
 private:
     // Everything but the fields: bounds, triangles in cluster order, boundary edges, the buffers.
     void build(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
-    void keep_cpu_copy(const std::vector<GpuVertex>& vertices);
+    void keep_cpu_copy(const UninitializedArray<GpuVertex>& vertices);
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
     GLuint position_vao_ = 0, position_buffer_ = 0;  // the positions alone, with triangle_buffer_
     GLuint edge_vao_ = 0, edge_buffer_ = 0;
