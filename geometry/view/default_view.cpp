@@ -442,8 +442,7 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
     const bool face = front == glm::vec2(0) && (front = front_of_face(mesh, step)) != glm::vec2(0);
 
     std::vector<double> entropy(candidates.size()), projected(candidates.size()), detail(candidates.size());
-    double max_projected = 0, max_detail = 0;
-    for (size_t c = 0; c < candidates.size(); ++c) {
+    parallel_for(candidates.size(), [&](size_t c) {  // each candidate on its own: the same sums on any thread
         const glm::vec3 d = view_direction(candidates[c]);
         std::array<double, kBins> weight{};
         double total = 0, bent = 0;
@@ -452,14 +451,14 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
             if (w > 0) weight[bin[f]] += w, total += w, bent += w * bending[f];
         }
         detail[c] = bent;
-        max_detail = std::max(max_detail, bent);
         double h = 0;
         for (double w : weight)
             if (w > 0) h -= (w / total) * std::log(w / total);
         entropy[c] = total > 0 ? h / std::log(double(kBins)) : 0.0;
         projected[c] = total;
-        max_projected = std::max(max_projected, total);
-    }
+    }, 1);
+    const double max_projected = std::max(0.0, *std::max_element(projected.begin(), projected.end()));
+    const double max_detail = std::max(0.0, *std::max_element(detail.begin(), detail.end()));
     // Cosine between a candidate's horizontal direction and the model's front.
     auto towards_front = [&](size_t c) {
         const glm::vec3 d = view_direction(candidates[c]);
