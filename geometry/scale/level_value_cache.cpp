@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#ifndef __EMSCRIPTEN__
+#include <unistd.h>
+#endif
+
 namespace kappa {
 
 LevelValueCache& LevelValueCache::operator=(const LevelValueCache& other) {
@@ -17,12 +21,17 @@ void LevelValueCache::enable(bool on) {
     if (!on) levels_.clear();
 }
 
-size_t LevelValueCache::default_budget_bytes() {
+size_t LevelValueCache::default_budget_bytes(size_t floats) {
 #ifdef __EMSCRIPTEN__
-    return size_t(256) << 20;  // a page's whole memory is a few GiB at most
+    const size_t memory = size_t(2) << 30;  // a page's whole memory is a few GiB at most
 #else
-    return size_t(5) << 29;  // 2.5 GiB: three levels of the curvature blend's for a 9M-vertex mesh
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    const size_t memory = pages > 0 && page > 0 ? size_t(pages) * size_t(page) : size_t(8) << 30;
 #endif
+    // An eighth of the memory for the curvature blend's values, at most 2.5 GiB (three levels of a
+    // 9M-vertex mesh); the surface blend's, a third of that (its values are 33 bytes, not 81).
+    const size_t curvature = std::min(memory / 8, size_t(5) << 29);
+    return floats >= 20 ? curvature : curvature / 3;
 }
 
 size_t LevelValueCache::bytes() const {

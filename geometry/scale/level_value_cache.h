@@ -5,8 +5,9 @@
 // a view asks of the vertex: a new view of the same mesh blends them again
 // without going back to the clusters (issue 30: a new view of a 17.8M-face
 // mesh). 81 bytes a vertex a level for the curvature blend, 33 for the
-// surface's; levels are kept within a memory budget, the least recently used
-// dropped first. Off until enabled: a single drawing would only pay for it.
+// surface's; levels are kept within a memory budget (an eighth of the
+// machine's memory, at most 2.5 GiB, for the curvature blend's; a third of
+// that for the surface's), the least recently used dropped first. Off until enabled: a single drawing would only pay for it.
 //
 // One blend at a time; within a blend each vertex's values are written by
 // the one thread that blends it. The values assume the space is always
@@ -26,7 +27,7 @@ public:
     enum State : uint8_t { Unknown = 0, Usable = 1, Unusable = 2 };
 
     // Each vertex's value is `floats` floats.
-    explicit LevelValueCache(size_t floats = 0) : floats_(floats) {}
+    explicit LevelValueCache(size_t floats = 0) : floats_(floats), budget_(default_budget_bytes(floats)) {}
     LevelValueCache(const LevelValueCache& other)  // a copy starts empty
         : floats_(other.floats_), enabled_(other.enabled_), budget_(other.budget_) {}
     LevelValueCache& operator=(const LevelValueCache& other);
@@ -46,7 +47,8 @@ public:
 
     size_t bytes() const;
     size_t level_bytes(size_t vertices) const { return vertices * (floats_ * sizeof(float) + 1); }
-    static size_t default_budget_bytes();
+    // For values of `floats` floats: a share of the machine's memory (level_value_cache.cpp).
+    static size_t default_budget_bytes(size_t floats);
     size_t budget_bytes() const { return budget_; }
     void set_budget_bytes(size_t budget) { budget_ = budget; }
 
@@ -58,7 +60,7 @@ private:
     };
     size_t floats_ = 0;
     bool enabled_ = false;
-    size_t budget_ = default_budget_bytes();
+    size_t budget_ = 0;
     size_t vertices_ = 0;
     uint64_t clock_ = 0;
     std::vector<Level> levels_;
