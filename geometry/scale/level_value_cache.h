@@ -7,7 +7,8 @@
 // mesh). 81 bytes a vertex a level for the curvature blend, 33 for the
 // surface's; levels are kept within a memory budget (an eighth of the
 // machine's memory, at most 2.5 GiB, for the curvature blend's; a third of
-// that for the surface's), the least recently used dropped first. Off until enabled: a single drawing would only pay for it.
+// that for the surface's), the least recently used dropped first. Off until
+// enabled: a single drawing would only pay for it.
 //
 // One blend at a time; within a blend each vertex's values are written by
 // the one thread that blends it. The values assume the space is always
