@@ -12,8 +12,8 @@ namespace {
 
 // r packed in 16 bits: three signed 5-bit components, round(15 n / max |n_k|), under a set bit 15 (0 is
 // "none yet"). Any direction serves as r, so the rounding (under 3 degrees) costs only a little of the
-// half angle's slack, unpacking it takes no table, and the references of a big mesh (2 bytes a vertex)
-// stay in the cache where 4 bytes would not: they are read at every corner, in no order.
+// half angle's slack; the references take 2 bytes a vertex, and each packed value's unit vector comes
+// from one small table (unit_references).
 uint16_t pack(glm::vec3 n) {
     const float scale = 15.0f / std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
     uint32_t packed = 1u << 15;
