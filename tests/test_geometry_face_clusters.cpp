@@ -64,6 +64,11 @@ void check_partition(const Mesh& m, const FaceClusters& cl, uint32_t max_faces) 
     for (uint32_t v = 0; v < m.vertex_count(); ++v)
         if (!seen[v]) expected.push_back(v);
     CHECK(cl.vertex_order == expected);
+    // vertex_slot: its inverse.
+    REQUIRE(cl.vertex_slot.size() == m.vertex_count());
+    size_t not_inverse = 0;
+    for (uint32_t i = 0; i < m.vertex_count(); ++i) not_inverse += cl.vertex_slot[cl.vertex_order[i]] != i;
+    CHECK(not_inverse == 0);
 }
 
 // Number of clusters whose faces are not connected through shared vertices.
@@ -228,6 +233,7 @@ TEST_CASE("face clusters: empty mesh, max_faces 0, many components", "[geometry]
     CHECK(empty.size() == 0);
     CHECK(empty.face_order.empty());
     CHECK(empty.vertex_order.empty());
+    CHECK(empty.vertex_slot.empty());
     // Vertices no face uses come last, in their own order.
     Mesh loose = make_icosphere(1.0f, 1);
     loose.positions.insert(loose.positions.begin(), glm::vec3(5, 0, 0));

@@ -9,19 +9,22 @@ namespace kappa {
 
 namespace {
 
-// New -> old: vertices in order of first use by faces[order[0]], faces[order[1]], ..., then the unused ones.
-std::vector<uint32_t> vertex_order_of_use(const Mesh& mesh, const std::vector<uint32_t>& order) {
+// vertex_order (new -> old: vertices in order of first use by faces[order[0]], faces[order[1]], ..., then
+// the unused ones) and vertex_slot (its inverse).
+void order_vertices_by_use(const Mesh& mesh, FaceClusters& out) {
     constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
-    std::vector<uint32_t> new_id(mesh.vertex_count(), none), out;
-    out.reserve(mesh.vertex_count());
-    for (uint32_t f : order)
+    std::vector<uint32_t>& new_id = out.vertex_slot;
+    std::vector<uint32_t>& order = out.vertex_order;
+    new_id.assign(mesh.vertex_count(), none);
+    order.clear();
+    order.reserve(mesh.vertex_count());
+    for (uint32_t f : out.face_order)
         for (int j = 0; j < 3; ++j) {
             const uint32_t v = mesh.faces[f][j];
-            if (new_id[v] == none) new_id[v] = uint32_t(out.size()), out.push_back(v);
+            if (new_id[v] == none) new_id[v] = uint32_t(order.size()), order.push_back(v);
         }
     for (uint32_t v = 0; v < new_id.size(); ++v)
-        if (new_id[v] == none) out.push_back(v);
-    return out;
+        if (new_id[v] == none) new_id[v] = uint32_t(order.size()), order.push_back(v);
 }
 
 }  // namespace
@@ -32,7 +35,7 @@ FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces) {
     FaceClusters out;
     out.cluster_start.push_back(0);
     if (nf == 0) {
-        out.vertex_order = vertex_order_of_use(mesh, out.face_order);
+        order_vertices_by_use(mesh, out);
         return out;
     }
     max_faces = uint32_t(std::min<size_t>(std::max(max_faces, 1u), nf));
@@ -100,7 +103,7 @@ FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces) {
             seed = uint32_t(cursor);
         }
     }
-    out.vertex_order = vertex_order_of_use(mesh, out.face_order);
+    order_vertices_by_use(mesh, out);
     return out;
 }
 

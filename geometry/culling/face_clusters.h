@@ -24,6 +24,7 @@ struct FaceClusters {
     // stores its vertices in this order finds a run of faces' vertices close
     // together in memory (the clusters reorder the faces, not the vertices).
     std::vector<uint32_t> vertex_order;
+    std::vector<uint32_t> vertex_slot;  // old -> new: the inverse of vertex_order
     // Size clusters + 1; cluster c is face_order[cluster_start[c] .. cluster_start[c+1]).
     std::vector<uint32_t> cluster_start;
     size_t size() const { return cluster_start.empty() ? 0 : cluster_start.size() - 1; }
@@ -39,7 +40,7 @@ struct FaceClusters {
 // Input:  mesh (vertex indices must be < vertex_count(); any other defect is
 //         fine: isolated vertices, repeated indices, non-manifold edges),
 //         max_faces >= 1 (0 is treated as 1).
-// Output: every face in exactly one cluster, and vertex_order; each cluster has 1..max_faces
+// Output: every face in exactly one cluster, vertex_order and vertex_slot; each cluster has 1..max_faces
 //         faces, all connected through shared vertices. An empty mesh gives
 //         zero clusters (cluster_start = {0}). Deterministic, O(V + F).
 FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces = 256);

@@ -19,28 +19,24 @@ FieldUploadSteps::FieldUploadSteps(const Mesh& mesh, const SurfaceFields& fields
     const bool own_fine = !fine_normals.empty();
     if (own_fine && fine_normals.size() != n)
         throw std::invalid_argument("MeshBuffers: fine normals do not match the mesh's vertex count");
-    if (clusters.vertex_order.size() != n)
+    if (clusters.vertex_order.size() != n || clusters.vertex_slot.size() != n)
         throw std::invalid_argument("MeshBuffers: face clusters of another mesh");
 
     FieldUpload& u = upload_;
     u.feature_size = feature_size;
-    // Each vertex's record to its place in the clusters' vertex order: the fields read in their own
+    // Each vertex's record to its place in the clusters' vertex order (vertex_slot): the fields read in their own
     // order and each record written once where it goes (gathered in the clusters' order instead, every
     // record would read eight arrays at a place of its own).
-    steps_.add_once([&, n] {
-        u.vertices = UninitializedArray<GpuVertex>(n);
-        slot_ = UninitializedArray<uint32_t>(n);
-        parallel_for(n, [&](size_t i) { slot_[clusters.vertex_order[i]] = uint32_t(i); });
-    });
+    steps_.add_once([&, n] { u.vertices = UninitializedArray<GpuVertex>(n); });
     steps_.add_chunks(n, chunk, [&, own_fine](size_t first, size_t last) {
         parallel_for(last - first, [&](size_t k) {
             const size_t v = first + k;
-            u.vertices[slot_[v]] = {mesh.positions[v], fields.normals[v], fields.d1[v], fields.d2[v],
-                                    {fields.k1[v], fields.k2[v]}, fields.dcurv[v], fields.unreliable(v) ? 1.0f : 0.0f,
-                                    own_fine ? fine_normals[v] : fields.normals[v]};
+            u.vertices[clusters.vertex_slot[v]] = {mesh.positions[v], fields.normals[v], fields.d1[v], fields.d2[v],
+                                                   {fields.k1[v], fields.k2[v]}, fields.dcurv[v],
+                                                   fields.unreliable(v) ? 1.0f : 0.0f,
+                                                   own_fine ? fine_normals[v] : fields.normals[v]};
         });
     });
-    steps_.add_once([this] { slot_ = {}; });
     steps_.add_once([&] { u.clusters = mesh_cluster_bounds(mesh, fields, clusters, fine_normals); });
     steps_.add_once([&, feature_size] { vertex_bounds_ = vertex_bounds(fields, feature_size); });
     // Clusters of up to 256 faces (render/fields/mesh_buffers.cpp): about as much work as chunk / 64 of them.

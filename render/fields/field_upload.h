@@ -64,7 +64,6 @@ public:
 private:
     FieldUpload upload_;
     std::vector<VertexBounds> vertex_bounds_;
-    UninitializedArray<uint32_t> slot_;  // each vertex's place in the clusters' vertex order, while filling
     StepQueue steps_;
 };
 

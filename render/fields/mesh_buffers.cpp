@@ -74,8 +74,7 @@ void MeshBuffers::build(const Mesh& mesh, const std::vector<uint8_t>& flags, Fac
     // vertices lie close together (for the GL's vertex fetch and the CPU
     // line pass alike).
     face_clusters_ = std::move(clusters);
-    std::vector<uint32_t> new_id(vertex_count_);
-    for (uint32_t i = 0; i < vertex_count_; ++i) new_id[face_clusters_.vertex_order[i]] = i;
+    const std::vector<uint32_t>& new_id = face_clusters_.vertex_slot;
     std::vector<Face> ordered(mesh.faces.size());
     for (size_t i = 0; i < ordered.size(); ++i) {
         const Face& f = mesh.faces[face_clusters_.face_order[i]];
