@@ -21,17 +21,14 @@ void LevelValueCache::enable(bool on) {
     if (!on) levels_.clear();
 }
 
-size_t LevelValueCache::default_budget_bytes(size_t floats) {
+size_t LevelValueCache::curvature_budget_bytes() {
 #ifdef __EMSCRIPTEN__
     const size_t memory = size_t(2) << 30;  // a page's whole memory is a few GiB at most
 #else
     const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
     const size_t memory = pages > 0 && page > 0 ? size_t(pages) * size_t(page) : size_t(8) << 30;
 #endif
-    // An eighth of the memory for the curvature blend's values, at most 2.5 GiB (three levels of a
-    // 9M-vertex mesh); the surface blend's, a third of that (its values are 33 bytes, not 81).
-    const size_t curvature = std::min(memory / 8, size_t(5) << 29);
-    return floats >= 20 ? curvature : curvature / 3;
+    return std::min(memory / 8, size_t(5) << 29);
 }
 
 size_t LevelValueCache::bytes() const {
@@ -41,8 +38,7 @@ size_t LevelValueCache::bytes() const {
     return kept;
 }
 
-void LevelValueCache::prepare(size_t levels, size_t vertices, size_t first, size_t last,
-                              const std::vector<bool>& fitted) {
+void LevelValueCache::prepare(size_t levels, size_t vertices, const std::vector<size_t>& read) {
     if (!enabled_) return;
     if (vertices != vertices_ || levels != levels_.size()) {  // another mesh or space: start again
         levels_.clear();
@@ -51,8 +47,7 @@ void LevelValueCache::prepare(size_t levels, size_t vertices, size_t first, size
     }
     ++clock_;
     const size_t per_level = level_bytes(vertices);
-    for (size_t l = first; l <= last && l < levels; ++l) {
-        if (!fitted[l]) continue;
+    for (const size_t l : read) {
         Level& level = levels_[l];
         level.used = clock_;
         if (level.values) continue;

@@ -27,8 +27,8 @@ class LevelValueCache {
 public:
     enum State : uint8_t { Unknown = 0, Usable = 1, Unusable = 2 };
 
-    // Each vertex's value is `floats` floats.
-    explicit LevelValueCache(size_t floats = 0) : floats_(floats), budget_(default_budget_bytes(floats)) {}
+    // Each vertex's value is `floats` floats; levels are kept within `budget` bytes.
+    LevelValueCache(size_t floats, size_t budget) : floats_(floats), budget_(budget) {}
     LevelValueCache(const LevelValueCache& other)  // a copy starts empty
         : floats_(other.floats_), enabled_(other.enabled_), budget_(other.budget_) {}
     LevelValueCache& operator=(const LevelValueCache& other);
@@ -38,18 +38,20 @@ public:
     void enable(bool on);
     bool enabled() const { return enabled_; }
 
-    // Before a blend over `vertices` vertices that reads levels first..last (of `levels`): makes room
-    // for those that `fitted` says are fitted, dropping others beyond the budget, least recently used
-    // first. Levels left without room are blended as if there were no cache.
-    void prepare(size_t levels, size_t vertices, size_t first, size_t last, const std::vector<bool>& fitted);
-    // The level's values (`floats` a vertex) and their states (one a vertex), or null when it has none.
+    // Before a blend over `vertices` vertices that reads the levels `read` (of `levels`): makes room for
+    // them, dropping others beyond the budget, least recently used first. Levels left without room are
+    // blended as if there were no cache.
+    void prepare(size_t levels, size_t vertices, const std::vector<size_t>& read);
+    // The level's values (floats() a vertex) and their states (one a vertex), or null when it has none.
     float* values(size_t level) const { return level < levels_.size() ? levels_[level].values.get() : nullptr; }
     uint8_t* states(size_t level) const { return level < levels_.size() ? levels_[level].states.get() : nullptr; }
 
+    size_t floats() const { return floats_; }
     size_t bytes() const;
     size_t level_bytes(size_t vertices) const { return vertices * (floats_ * sizeof(float) + 1); }
-    // For values of `floats` floats: a share of the machine's memory (level_value_cache.cpp).
-    static size_t default_budget_bytes(size_t floats);
+    // The curvature blend's budget: an eighth of the machine's memory, at most 2.5 GiB (three levels
+    // of a 9M-vertex mesh).
+    static size_t curvature_budget_bytes();
     size_t budget_bytes() const { return budget_; }
     void set_budget_bytes(size_t budget) { budget_ = budget; }
 

@@ -109,7 +109,7 @@ bool cached_level_value(const ScaleSpace& space, size_t l, uint32_t v, const glm
     const LevelValueCache& cache = kBlend == Blend::Tensors ? space.tensor_values : space.surface_values;
     uint8_t* states = kBlend == Blend::Normals ? nullptr : cache.states(l);
     if (!states) return level_value<kBlend>(space.clusters[l], space.levels[l], v, p, out);
-    float* kept = cache.values(l) + size_t(v) * (kBlend == Blend::Tensors ? 20 : 8);
+    float* kept = cache.values(l) + size_t(v) * cache.floats();
     if (states[v] == LevelValueCache::Unknown) {
         const bool usable = level_value<kBlend>(space.clusters[l], space.levels[l], v, p, out);
         if (usable) pack_value<kBlend>(out, kept);
@@ -174,26 +174,32 @@ bool blend_vertex(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
     return true;
 }
 
+// The levels that scales in [lo, hi] blend from: level floor(lambda) and the next one, lambda the
+// level coordinate of each scale (none when all are at or below the raw scale).
+std::vector<size_t> blended_levels(const ScaleSpace& space, float lo, float hi) {
+    std::vector<size_t> levels;
+    if (space.levels.empty() || !(hi > space.raw_scale) || std::isnan(lo)) return levels;
+    const int first = std::max(0, int(std::floor(level_coordinate(space, lo))));
+    const int last = int(std::ceil(level_coordinate(space, hi)));
+    for (int l = first; l <= last && l < int(space.levels.size()); ++l) levels.push_back(size_t(l));
+    return levels;
+}
+
 void prepare_cache(const Mesh& mesh, const ScaleSpace& space, LevelValueCache& cache, const std::vector<float>& sigma,
                    size_t first, size_t last) {
-    if (!cache.enabled() || first >= last || space.levels.empty()) return;
+    if (!cache.enabled() || first >= last) return;
     const auto [lo, hi] = std::minmax_element(sigma.begin() + long(first), sigma.begin() + long(last));
-    if (!std::isfinite(*lo) || !std::isfinite(*hi)) return;
-    std::vector<bool> fitted(space.levels.size());
-    for (size_t l = 0; l < fitted.size(); ++l) fitted[l] = space.levels[l].fitted();
-    const int from = std::max(0, int(std::floor(level_coordinate(space, *lo))));
-    const int to = int(std::floor(level_coordinate(space, *hi))) + 1;
-    if (to >= from) cache.prepare(space.levels.size(), mesh.vertex_count(), size_t(from), size_t(to), fitted);
+    std::vector<size_t> read = blended_levels(space, *lo, *hi);
+    read.erase(std::remove_if(read.begin(), read.end(), [&](size_t l) { return !space.levels[l].fitted(); }),
+               read.end());
+    cache.prepare(space.levels.size(), mesh.vertex_count(), read);
 }
 
 // The levels that scales in [lo, hi] blend from and that are not fitted yet.
 std::vector<size_t> unfitted_levels(const ScaleSpace& space, float lo, float hi) {
-    std::vector<size_t> todo;
-    if (space.levels.empty() || !(hi > space.raw_scale)) return todo;
-    const int first = std::max(0, int(std::floor(level_coordinate(space, lo))));
-    const int last = int(std::ceil(level_coordinate(space, hi)));
-    for (int l = first; l <= last && l < int(space.levels.size()); ++l)
-        if (!space.levels[size_t(l)].fitted()) todo.push_back(size_t(l));
+    std::vector<size_t> todo = blended_levels(space, lo, hi);
+    todo.erase(std::remove_if(todo.begin(), todo.end(), [&](size_t l) { return space.levels[l].fitted(); }),
+               todo.end());
     return todo;
 }
 

@@ -47,7 +47,9 @@ struct ScaleSpace {
     std::vector<ScaleLevelFields> levels;  // one per level (fitted on demand)
     // Each level's value at each vertex, the curvature blend's and the surface's, kept when
     // enabled (level_value_cache.h): caches, filled by the blends that read the space.
-    mutable LevelValueCache tensor_values{20}, surface_values{8};
+    // The surface's values are 33 bytes a vertex, the curvature's 81: a third of the budget.
+    mutable LevelValueCache tensor_values{20, LevelValueCache::curvature_budget_bytes()},
+        surface_values{8, LevelValueCache::curvature_budget_bytes() / 3};
     void keep_level_values(bool on) { tensor_values.enable(on), surface_values.enable(on); }
 
     bool empty() const { return levels.empty(); }
