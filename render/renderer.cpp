@@ -76,6 +76,12 @@ void Renderer::upload_fields(FieldUpload&& prepared) {
     if (mesh_) mesh_->upload(std::move(prepared));
 }
 
+void Renderer::begin_field_upload(FieldUpload&& prepared) {
+    if (mesh_) mesh_->begin_upload(std::move(prepared));
+}
+
+bool Renderer::continue_field_upload(size_t bytes) { return !mesh_ || mesh_->upload_step(bytes); }
+
 void Renderer::ensure_buffers(int width, int height, bool msaa) {
     const int samples = msaa ? 4 : 0;
     if (msaa && !surface_ms_fb_.matches(width, height, samples))

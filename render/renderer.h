@@ -44,6 +44,11 @@ public:
     void set_creases(const std::vector<glm::vec3>& end_points);
     // Fields prepared on another thread (render/fields/field_upload.h).
     void upload_fields(FieldUpload&& prepared);
+    // The same in slices, drawing the fields uploaded before until the last
+    // one (MeshBuffers::begin_upload): for a viewer's frames.
+    void begin_field_upload(FieldUpload&& prepared);
+    bool continue_field_upload(size_t bytes);  // true when nothing is pending any more
+    bool field_upload_pending() const { return mesh_ && mesh_->upload_pending(); }
     const MeshBuffers* mesh() const { return mesh_.get(); }
 
     // The surface depth of the last frame drawn (window depth, 1 = background,

@@ -129,6 +129,24 @@ TEST_CASE("The fields' upload prepared in small steps is the same bits as in one
     const render::FieldUpload stepped = steps.take();
     CHECK(n > mesh.vertex_count() / 500);
     CHECK(same_bits(stepped.vertices, once.vertices));
+    // The CPU copy: the records' values, in their order.
+    const render::FieldCopy& c = stepped.copy;
+    CHECK(same_bits(c.positions, once.copy.positions));
+    CHECK(same_bits(c.fine_normals, once.copy.fine_normals));
+    CHECK(same_bits(c.fields.dcurv, once.copy.fields.dcurv));
+    REQUIRE(c.positions.size() == mesh.vertex_count());
+    REQUIRE(c.fields.k2.size() == mesh.vertex_count());
+    size_t mismatched = 0;
+    for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+        const size_t i = clusters.vertex_slot[v];
+        const render::GpuVertex& r = once.vertices[i];
+        mismatched += c.positions[i] != d.mesh.positions[v] || c.fields.normals[i] != r.normal ||
+                      c.fields.d1[i] != r.d1 || c.fields.d2[i] != r.d2 || c.fields.k1[i] != r.curv.x ||
+                      c.fields.k2[i] != r.curv.y || c.fields.dcurv[i] != r.dcurv ||
+                      c.fine_normals[i] != r.fine_normal ||
+                      c.fields.unreliable(i) != d.fields.unreliable(v);
+    }
+    CHECK(mismatched == 0);
     const render::MeshClusters &a = stepped.clusters, &b = once.clusters;
     CHECK(same_bits(a.bounds, b.bounds));
     CHECK(same_bits(a.fine_bounds, b.fine_bounds));

@@ -112,14 +112,18 @@ int ViewerApp::run() {
         draw_frame();
     }
     if (options_.scripted() && exit_status_ == 0)  // a failed run says only what failed
-        std::printf("frames: %zu still, median %.1f ms; %zu while dragging, median %.1f ms\n", still_ms_.size(),
-                    median(still_ms_), moving_ms_.size(), median(moving_ms_));
+        std::printf("frames: %zu still, median %.1f ms; %zu while dragging, median %.1f ms; "
+                    "new fields landed %zu times, longest %.1f ms\n",
+                    still_ms_.size(), median(still_ms_), moving_ms_.size(), median(moving_ms_), landing_ms_.size(),
+                    landing_ms_.empty() ? 0.0f : *std::max_element(landing_ms_.begin(), landing_ms_.end()));
     return exit_status_;
 }
 
 void ViewerApp::wait_for_events() {
     if (drag_button_ >= 0) {
         glfwPollEvents();  // orbiting: as many frames as the machine draws
+    } else if (renderer_->field_upload_pending()) {
+        glfwPollEvents();  // new fields on their way to the GPU, a slice a frame
     } else if (compute_.busy() || renderer_->hatching_pending()) {
         glfwWaitEventsTimeout(0.05);  // the progress bar moves; the computation gets the cores
     } else if (options_.scripted() || redraw_frames_ > 0) {
@@ -201,10 +205,13 @@ void ViewerApp::request_view_fields() {
     if (!model_ || !renderer_->mesh()) return;
     if (auto done = compute_.take_view()) {
         if (done->mesh == model_->mesh && done->detail_px == effective_detail()) {
-            renderer_->upload_fields(std::move(done->upload));
+            const auto t = std::chrono::steady_clock::now();
+            renderer_->begin_field_upload(std::move(done->upload));
+            continue_field_upload(t);
             shown_ = {done->detail_px, done->camera, done->height};
-            redraw_frames_ = 2;
         }
+    } else if (renderer_->field_upload_pending()) {
+        continue_field_upload(std::chrono::steady_clock::now());
     }
     if (drag_button_ >= 0 || compute_.view_busy() || compute_.busy() || !view_fields_stale()) return;
     const float detail = effective_detail();
@@ -217,6 +224,17 @@ void ViewerApp::request_view_fields() {
         return;
     }
     compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail});
+}
+
+// New fields reach the GPU in slices over several frames, each frame's
+// share a quarter of a frame (at least 4 ms): a 17.8M-face mesh's 890 MB
+// would hold one frame for half a second on a GPU (MeshBuffers::begin_upload).
+void ViewerApp::continue_field_upload(std::chrono::steady_clock::time_point since) {
+    const double budget_s = std::max(0.004, 0.25e-3 * double(median(frame_ms_)));
+    while (!renderer_->continue_field_upload(size_t(8) << 20))
+        if (seconds_since(since) >= budget_s) break;
+    landing_ms_.push_back(1e3f * float(seconds_since(since)));
+    redraw_frames_ = 2;  // the frames go on until the new fields are drawn
 }
 
 bool ViewerApp::view_fields_stale() const {

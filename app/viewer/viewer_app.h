@@ -58,6 +58,7 @@ private:
     void adopt_results();
     float effective_detail() const;  // the detail setting, 0 while explicit smoothing widths override it
     void request_view_fields();      // new detail fields when the view's scale changed
+    void continue_field_upload(std::chrono::steady_clock::time_point since);
     bool view_fields_stale() const;  // the fields on the GPU are for another scale or direction of view
     // The drawing sits right of the panel: its left edge and size in window
     // coordinates (as the cursor), and its size in framebuffer pixels.
@@ -109,6 +110,7 @@ private:
     // Timing.
     std::deque<float> frame_ms_;  // the last frames, for the panel
     std::vector<float> still_ms_, moving_ms_;  // every frame with a model, reported after scripted runs
+    std::vector<float> landing_ms_;  // the main thread's share of new fields in each frame, likewise
     bool full_quality_slow_ = false;  // the last full-quality frame took over 33 ms
     bool quick_frame_ = false;        // draw the next frame without MSAA (a big mesh just arrived)
     render::Camera last_view_;        // the last frame's view: another one means the view moves

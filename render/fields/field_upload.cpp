@@ -1,5 +1,6 @@
 #include "render/fields/field_upload.h"
 
+#include "geometry/curvature/vertex_flags.h"
 #include "geometry/parallel/parallel.h"
 #include "render/fields/mesh_buffers.h"
 
@@ -35,6 +36,26 @@ FieldUploadSteps::FieldUploadSteps(const Mesh& mesh, const SurfaceFields& fields
                                                    {fields.k1[v], fields.k2[v]}, fields.dcurv[v],
                                                    fields.unreliable(v) ? 1.0f : 0.0f,
                                                    own_fine ? fine_normals[v] : fields.normals[v]};
+        });
+    });
+    // The CPU copy, read back from the records in their order.
+    steps_.add_once([&, n] {
+        FieldCopy& c = u.copy;
+        c.positions.resize(n), c.fine_normals.resize(n);
+        SurfaceFields& f = c.fields;
+        f.normals.resize(n), f.k1.resize(n), f.k2.resize(n), f.d1.resize(n), f.d2.resize(n), f.dcurv.resize(n);
+        f.flags.resize(n);
+    });
+    steps_.add_chunks(n, chunk, [&](size_t first, size_t last) {
+        FieldCopy& c = u.copy;
+        SurfaceFields& f = c.fields;
+        parallel_for(last - first, [&](size_t k) {
+            const size_t i = first + k;
+            const GpuVertex& r = u.vertices[i];
+            c.positions[i] = r.position, c.fine_normals[i] = r.fine_normal;
+            f.normals[i] = r.normal, f.d1[i] = r.d1, f.d2[i] = r.d2;
+            f.k1[i] = r.curv.x, f.k2[i] = r.curv.y, f.dcurv[i] = r.dcurv;
+            f.flags[i] = r.unreliable > 0 ? kFlagUnreliable : 0;
         });
     });
     steps_.add_once([&] { u.clusters = mesh_cluster_bounds(mesh, fields, clusters, fine_normals); });

@@ -34,8 +34,19 @@ struct GpuVertex {
 // Compute passes read the records as 22 floats (shaders/common/mesh_vertex_fetch.glsl).
 static_assert(sizeof(GpuVertex) == 22 * sizeof(float), "GpuVertex must stay 22 packed floats");
 
+// The same records as arrays on the CPU, in the same order, for what is made
+// on the CPU from what the GPU draws (MeshBuffers::cpu_fields): positions,
+// fields (normals, k1, k2, d1, d2, C, flags: kFlagUnreliable alone) and the
+// pixel-scale normals.
+struct FieldCopy {
+    std::vector<glm::vec3> positions;
+    SurfaceFields fields;
+    std::vector<glm::vec3> fine_normals;
+};
+
 struct FieldUpload {
     UninitializedArray<GpuVertex> vertices;  // in FaceClusters::vertex_order; filled whole by the threads
+    FieldCopy copy;                          // made beside them, off the GL thread
     MeshClusters clusters;
     float feature_size = 1;
 };

@@ -63,12 +63,12 @@ void MeshBuffers::build(const Mesh& mesh, const std::vector<uint8_t>& flags, Fac
     bounds_ = bounding_sphere(mesh);
     back_faces_ = back_face_visibility(mesh);
 
-    glGenVertexArrays(1, &vao_);
-    glBindVertexArray(vao_);
     glGenBuffers(1, &vertex_buffer_);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(GpuVertex)), nullptr, GL_DYNAMIC_DRAW);
-    set_vertex_attributes();
+    glGenBuffers(1, &position_buffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
     // Triangles in cluster order, so the contour pass can draw runs of them,
     // and vertices in order of first use by those triangles, so a run's
     // vertices lie close together (for the GL's vertex fetch and the CPU
@@ -80,33 +80,42 @@ void MeshBuffers::build(const Mesh& mesh, const std::vector<uint8_t>& flags, Fac
         const Face& f = mesh.faces[face_clusters_.face_order[i]];
         ordered[i] = {new_id[f[0]], new_id[f[1]], new_id[f[2]]};
     }
+    // The triangles with the whole records (vao_) and with the positions alone (position_vao_).
+    glGenVertexArrays(1, &vao_);
+    glGenVertexArrays(1, &position_vao_);
     glGenBuffers(1, &triangle_buffer_);
+    glBindVertexArray(vao_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
     cpu_mesh_.faces = std::move(ordered);
-    glGenVertexArrays(1, &position_vao_);
     glBindVertexArray(position_vao_);
-    glGenBuffers(1, &position_buffer_);
-    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
 
-    // Boundary edges share the vertex buffer through a second VAO.
+    // Boundary edges share the vertex buffer through a third VAO.
     std::vector<glm::uvec2> edges = boundary_edges(mesh, flags);
     for (glm::uvec2& e : edges) e = {new_id[e.x], new_id[e.y]};
     boundary_edges_ = edges.size();
     glGenVertexArrays(1, &edge_vao_);
     glBindVertexArray(edge_vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    set_vertex_attributes();
     glGenBuffers(1, &edge_buffer_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_buffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(edges.size() * sizeof(glm::uvec2)), edges.data(), GL_STATIC_DRAW);
     cpu_boundary_edges_ = std::move(edges);
+    bind_vertex_arrays();
+}
 
+void MeshBuffers::bind_vertex_arrays() {
+    for (GLuint array : {vao_, edge_vao_}) {
+        glBindVertexArray(array);
+        glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+        set_vertex_attributes();
+    }
+    glBindVertexArray(position_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
@@ -116,38 +125,78 @@ void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, f
     upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
 }
 
-// The CPU copy of what the shaders read (for CPU line extraction and strokes).
-void MeshBuffers::keep_cpu_copy(const UninitializedArray<GpuVertex>& v) {
-    const size_t n = v.size();
-    SurfaceFields& f = cpu_fields_;
-    cpu_mesh_.positions.resize(n);
-    f.normals.resize(n), f.k1.resize(n), f.k2.resize(n), f.d1.resize(n), f.d2.resize(n), f.dcurv.resize(n);
-    f.flags.resize(n), cpu_fine_normals_.resize(n);
-    parallel_for(n, [&](size_t i) {
-        cpu_mesh_.positions[i] = v[i].position;
-        f.normals[i] = v[i].normal, f.d1[i] = v[i].d1, f.d2[i] = v[i].d2;
-        f.k1[i] = v[i].curv.x, f.k2[i] = v[i].curv.y, f.dcurv[i] = v[i].dcurv;
-        f.flags[i] = v[i].unreliable > 0 ? kFlagUnreliable : 0;
-        cpu_fine_normals_[i] = v[i].fine_normal;
-    });
-}
-
-void MeshBuffers::upload(FieldUpload&& u) {
-    if (u.vertices.size() != vertex_count_) throw std::invalid_argument("MeshBuffers: upload for a different mesh");
+void MeshBuffers::adopt(FieldUpload&& u) {
     feature_size_ = u.feature_size;
     range_known_ = {};
     seeds_stale_ = true;  // drawn again from the new surface when hatching asks (hatch_seeds)
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
-    keep_cpu_copy(u.vertices);
+    cpu_mesh_.positions = std::move(u.copy.positions);
+    cpu_fields_ = std::move(u.copy.fields);
+    cpu_fine_normals_ = std::move(u.copy.fine_normals);
+    clusters_ = std::move(u.clusters);
     static std::atomic<uint64_t> uploads{0};
     fields_version_ = ++uploads;
-    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(cpu_mesh_.positions.size() * sizeof(glm::vec3)),
-                    cpu_mesh_.positions.data());
-    clusters_ = std::move(u.clusters);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
+
+void MeshBuffers::upload(FieldUpload&& u) {
+    if (u.vertices.size() != vertex_count_ || u.copy.positions.size() != vertex_count_)
+        throw std::invalid_argument("MeshBuffers: upload for a different mesh");
+    drop_pending();
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
+    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), u.copy.positions.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    adopt(std::move(u));
+}
+
+void MeshBuffers::begin_upload(FieldUpload&& u) {
+    if (u.vertices.size() != vertex_count_ || u.copy.positions.size() != vertex_count_)
+        throw std::invalid_argument("MeshBuffers: upload for a different mesh");
+    drop_pending();
+    pending_ = std::make_unique<PendingUpload>();
+    pending_->fields = std::move(u);
+    // Into the buffers the last fields but one were drawn from, once there are some: a
+    // software GL clears a new buffer (llvmpipe: 0.15-0.7 s for 890 MB).
+    if (!spare_vertex_buffer_) {
+        glGenBuffers(1, &spare_vertex_buffer_);
+        glBindBuffer(GL_ARRAY_BUFFER, spare_vertex_buffer_);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(GpuVertex)), nullptr, GL_DYNAMIC_DRAW);
+        glGenBuffers(1, &spare_position_buffer_);
+        glBindBuffer(GL_ARRAY_BUFFER, spare_position_buffer_);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+}
+
+bool MeshBuffers::upload_step(size_t bytes) {
+    if (!pending_) return true;
+    PendingUpload& p = *pending_;
+    const size_t record_bytes = vertex_count_ * sizeof(GpuVertex);
+    const size_t total = record_bytes + vertex_count_ * sizeof(glm::vec3);
+    size_t budget = std::max<size_t>(bytes, 1);
+    while (budget > 0 && p.bytes_sent < total) {
+        const bool records = p.bytes_sent < record_bytes;
+        const size_t at = records ? p.bytes_sent : p.bytes_sent - record_bytes;
+        const size_t size = std::min(budget, (records ? record_bytes : total - record_bytes) - at);
+        const char* from = records ? reinterpret_cast<const char*>(p.fields.vertices.data())
+                                   : reinterpret_cast<const char*>(p.fields.copy.positions.data());
+        glBindBuffer(GL_ARRAY_BUFFER, records ? spare_vertex_buffer_ : spare_position_buffer_);
+        glBufferSubData(GL_ARRAY_BUFFER, GLintptr(at), GLsizeiptr(size), from + at);
+        p.bytes_sent += size, budget -= size;
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    if (p.bytes_sent < total) return false;
+    // The last slice is sent: the spare buffers become the drawn ones, and the drawn ones spare.
+    std::swap(vertex_buffer_, spare_vertex_buffer_);
+    std::swap(position_buffer_, spare_position_buffer_);
+    bind_vertex_arrays();
+    FieldUpload done = std::move(p.fields);
+    pending_.reset();
+    adopt(std::move(done));
+    return true;
+}
+
+void MeshBuffers::drop_pending() { pending_.reset(); }  // its buffers stay spare
 
 float MeshBuffers::map_range(ColorMap map) const {
     const size_t m = size_t(map);
@@ -167,7 +216,8 @@ const std::vector<MeshBuffers::Seed>& MeshBuffers::hatch_seeds() {
 }
 
 MeshBuffers::~MeshBuffers() {
-    const GLuint buffers[] = {vertex_buffer_, triangle_buffer_, position_buffer_, edge_buffer_, crease_buffer_};
+    const GLuint buffers[] = {vertex_buffer_,  triangle_buffer_,       position_buffer_,      edge_buffer_,
+                              crease_buffer_, spare_vertex_buffer_, spare_position_buffer_};
     glDeleteBuffers(GLsizei(std::size(buffers)), buffers);
     const GLuint arrays[] = {vao_, position_vao_, edge_vao_, crease_vao_};
     glDeleteVertexArrays(GLsizei(std::size(arrays)), arrays);

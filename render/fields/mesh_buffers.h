@@ -15,6 +15,7 @@
 #include "render/render_settings.h"
 
 #include <array>
+#include <memory>
 
 namespace kappa::render {
 
@@ -41,6 +42,17 @@ public:
     // The same in two halves: prepare_field_upload (render/fields/field_upload.h,
     // any thread, with face_clusters()) then this, on the GL thread.
     void upload(FieldUpload&& prepared);
+    // The second half in slices, for a viewer whose frames must not wait for
+    // hundreds of MB (a 17.8M-face mesh has 783 MB of vertex records): the
+    // records go into a second vertex buffer (kept for the next time: GPU
+    // memory for one more copy of the records), at most `bytes` a call of
+    // upload_step, while frames draw the fields uploaded before; the call
+    // that sends the last slice makes the new fields current (buffers, CPU
+    // copy, culling bounds, fields_version) and returns true. A new
+    // begin_upload, or an upload or update_fields, drops a pending one.
+    void begin_upload(FieldUpload&& prepared);
+    bool upload_step(size_t bytes);  // true when nothing is pending any more
+    bool upload_pending() const { return pending_ != nullptr; }
     const FaceClusters& face_clusters() const { return face_clusters_; }
     // A CPU copy of what the shaders read, for lines made on the CPU (strokes,
     // the CPU isoline pass): the positions and faces in the uploaded order
@@ -110,7 +122,17 @@ public:
 private:
     // Everything but the fields: bounds, triangles in cluster order, boundary edges, the buffers.
     void build(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
-    void keep_cpu_copy(const UninitializedArray<GpuVertex>& vertices);
+    // Makes the uploaded fields current: their CPU copy, bounds and version.
+    void adopt(FieldUpload&& uploaded);
+    // Points the vertex arrays at vertex_buffer_ and position_buffer_.
+    void bind_vertex_arrays();
+    void drop_pending();
+    struct PendingUpload {
+        FieldUpload fields;
+        size_t bytes_sent = 0;  // the records first, then the positions, into the spare buffers
+    };
+    std::unique_ptr<PendingUpload> pending_;
+    GLuint spare_vertex_buffer_ = 0, spare_position_buffer_ = 0;  // made by the first begin_upload
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
     GLuint position_vao_ = 0, position_buffer_ = 0;  // the positions alone, with triangle_buffer_
     GLuint edge_vao_ = 0, edge_buffer_ = 0;
