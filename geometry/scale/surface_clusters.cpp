@@ -1,6 +1,7 @@
 #include "surface_clusters.h"
 
 #include "geometry/mesh/union_find.h"
+#include "geometry/parallel/parallel.h"
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
@@ -24,6 +25,21 @@ void for_each_edge(const Mesh& mesh, Fn&& fn) {
         }
 }
 
+// The cell's position along a Z-order (Morton) curve: 21 bits of each coordinate interleaved.
+uint64_t z_order(glm::ivec3 cell) {
+    auto spread = [](uint32_t x) {  // bit i to bit 3i
+        uint64_t v = x & 0x1fffff;
+        v = (v | v << 32) & 0x1f00000000ffffull;
+        v = (v | v << 16) & 0x1f0000ff0000ffull;
+        v = (v | v << 8) & 0x100f00f00f00f00full;
+        v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+        v = (v | v << 2) & 0x1249249249249249ull;
+        return v;
+    };
+    auto coordinate = [](int c) { return uint32_t(std::max(c, 0)); };  // cells start at the lowest corner
+    return spread(coordinate(cell.x)) | spread(coordinate(cell.y)) << 1 | spread(coordinate(cell.z)) << 2;
+}
+
 }  // namespace
 
 ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& point_areas,
@@ -39,18 +55,32 @@ ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& 
     for_each_edge(mesh, [&](uint32_t a, uint32_t b) {
         if (key[a] == key[b]) uf.unite(a, b);
     });
-    std::vector<glm::ivec3>().swap(key);  // not needed any more
 
-    // Clusters numbered by their first vertex: deterministic.
+    // Clusters numbered along a Z-order curve through their cells (pieces of one cell by
+    // their first vertex): neighbours get near numbers, so the fits' visits of a cluster's
+    // neighbours stay in the cache. Deterministic.
     level.vertex_cluster.resize(n);
     std::vector<uint32_t> root_cluster(n, UINT32_MAX);
+    std::vector<uint64_t> order;  // (Z-order code of the cell, first-vertex number) per cluster
     uint32_t clusters = 0;
     for (size_t v = 0; v < n; ++v) {
         const uint32_t r = uf.find(uint32_t(v));
-        if (root_cluster[r] == UINT32_MAX) root_cluster[r] = clusters++;
+        if (root_cluster[r] == UINT32_MAX) {
+            root_cluster[r] = clusters++;
+            order.push_back(z_order(key[v]));
+        }
         level.vertex_cluster[v] = root_cluster[r];
     }
+    std::vector<glm::ivec3>().swap(key);
     std::vector<uint32_t>().swap(root_cluster);
+    std::vector<uint32_t> rank(clusters);
+    for (uint32_t k = 0; k < clusters; ++k) rank[k] = k;
+    std::stable_sort(rank.begin(), rank.end(), [&](uint32_t a, uint32_t b) { return order[a] < order[b]; });
+    std::vector<uint64_t>().swap(order);
+    std::vector<uint32_t> renumbered(clusters);
+    for (uint32_t k = 0; k < clusters; ++k) renumbered[rank[k]] = k;
+    std::vector<uint32_t>().swap(rank);
+    parallel_for(n, [&](size_t v) { level.vertex_cluster[v] = renumbered[level.vertex_cluster[v]]; });
 
     level.area.assign(clusters, 0.0f);
     level.normal_sum.assign(clusters, glm::vec3(0.0f));

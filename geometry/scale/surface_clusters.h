@@ -11,8 +11,13 @@
 // area-weighted sum of vertex normals; two clusters are adjacent when a mesh
 // edge joins them.
 //
-// Built on one thread in index order: cluster numbering and every sum are
-// deterministic. O(V + F).
+// Clusters are numbered along a Z-order curve through their cells (the
+// pieces of one cell by their first vertex), so that neighbouring clusters
+// have near numbers: the fits' visits of each cluster's neighbours
+// (level_fit.h) stay in the cache (on a 17.8M-face mesh the finest level's
+// fit went from 7.5-8.7 s to 2.9-3.1 s on 2 threads). Built on one thread in
+// index order: cluster numbering and every sum are deterministic.
+// O(V log V + F).
 #pragma once
 
 #include "geometry/mesh/mesh.h"
