@@ -21,6 +21,12 @@ public:
         return x;
     }
 
+    // x's root without shortening paths: callable from several threads at once while none unites.
+    uint32_t root(uint32_t x) const {
+        while (parent_[x] != x) x = parent_[x];
+        return x;
+    }
+
     // Returns true when a and b were in different sets.
     bool unite(uint32_t a, uint32_t b) {
         a = find(a);

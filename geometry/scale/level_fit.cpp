@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 
 namespace kappa {
 
@@ -56,11 +58,21 @@ void gather_neighbourhoods(const ClusterLevel& level, const std::vector<glm::vec
     const float inv_r2 = 1.0f / (radius * radius);
     const size_t chunks = std::max<size_t>(1, std::min<size_t>(64, n / 1024));
     std::vector<LevelFitter::NeighbourLists> parts(chunks);
+    // One visitor a thread at a time rather than one a chunk: each fills its stamps (a word per
+    // cluster) once per call.
+    std::mutex pool_lock;
+    std::vector<std::unique_ptr<Neighbourhood>> pool;
     parallel_for(chunks, [&](size_t c) {
         const size_t from = first + n * c / chunks, to = first + n * (c + 1) / chunks;
         LevelFitter::NeighbourLists& part = parts[c];
         part.offsets.reserve(to - from);
-        Neighbourhood visitor;
+        std::unique_ptr<Neighbourhood> taken;
+        {
+            const std::lock_guard<std::mutex> hold(pool_lock);
+            if (!pool.empty()) taken = std::move(pool.back()), pool.pop_back();
+        }
+        if (!taken) taken = std::make_unique<Neighbourhood>();
+        Neighbourhood& visitor = *taken;
         for (size_t p = from; p < to; ++p) {
             if (dir[p] != glm::vec3(0.0f))
                 visitor.visit(level, dir, uint32_t(p), radius, [&](uint32_t q, float d2) {
@@ -72,6 +84,8 @@ void gather_neighbourhoods(const ClusterLevel& level, const std::vector<glm::vec
                 });
             part.offsets.push_back(uint32_t(part.cluster.size()));
         }
+        const std::lock_guard<std::mutex> hold(pool_lock);
+        pool.push_back(std::move(taken));
     }, 1);
     if (nb.offsets.empty()) nb.offsets.push_back(0);
     for (const LevelFitter::NeighbourLists& part : parts) {

@@ -40,6 +40,25 @@ uint64_t z_order(glm::ivec3 cell) {
     return spread(coordinate(cell.x)) | spread(coordinate(cell.y)) << 1 | spread(coordinate(cell.z)) << 2;
 }
 
+// for_each_edge over blocks of faces on the threads: fn must be safe to call from several at once.
+template <typename Fn>
+void for_each_edge_in_parallel(const Mesh& mesh, Fn&& fn) {
+    parallel_for_chunks(mesh.face_count(), [&](size_t first, size_t last) {
+        for (size_t f = first; f < last; ++f)
+            for (int e = 0; e < 3; ++e) {
+                const uint32_t a = mesh.faces[f][e], b = mesh.faces[f][(e + 1) % 3];
+                if (a < b) fn(a, b);
+            }
+    }, 65536);
+}
+
+// Sorts distinct pairs: halves sorted on two threads, then merged.
+void sort_in_parallel(std::vector<std::pair<uint64_t, uint32_t>>& v) {
+    const size_t half = v.size() / 2;
+    parallel_for(2, [&](size_t k) { std::sort(v.begin() + long(k * half), k ? v.end() : v.begin() + long(half)); }, 1);
+    std::inplace_merge(v.begin(), v.begin() + long(half), v.end());
+}
+
 }  // namespace
 
 ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& point_areas,
@@ -49,7 +68,7 @@ ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& 
     if (n == 0 || !(cell > 0) || !std::isfinite(cell)) return level;
     level.cell = cell;
     std::vector<glm::ivec3> key(n);
-    for (size_t v = 0; v < n; ++v) key[v] = glm::ivec3(glm::floor((mesh.positions[v] - origin) / cell));
+    parallel_for(n, [&](size_t v) { key[v] = glm::ivec3(glm::floor((mesh.positions[v] - origin) / cell)); });
 
     UnionFind uf(n);
     for_each_edge(mesh, [&](uint32_t a, uint32_t b) {
@@ -59,76 +78,84 @@ ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& 
     // Clusters numbered along a Z-order curve through their cells (pieces of one cell by
     // their first vertex): neighbours get near numbers, so the fits' visits of a cluster's
     // neighbours stay in the cache. Deterministic.
-    level.vertex_cluster.resize(n);
-    std::vector<uint32_t> root_cluster(n, UINT32_MAX);
-    std::vector<uint64_t> order;  // (Z-order code of the cell, first-vertex number) per cluster
-    uint32_t clusters = 0;
-    for (size_t v = 0; v < n; ++v) {
-        const uint32_t r = uf.find(uint32_t(v));
-        if (root_cluster[r] == UINT32_MAX) {
-            root_cluster[r] = clusters++;
-            order.push_back(z_order(key[v]));
+    // Each vertex's root and each root's first (least) vertex, on the threads; then the roots in that order.
+    std::vector<uint32_t> root(n), first_vertex(n, UINT32_MAX);
+    parallel_for(n, [&](size_t v) {
+        const uint32_t r = root[v] = uf.root(uint32_t(v));
+        uint32_t least = __atomic_load_n(&first_vertex[r], __ATOMIC_RELAXED);
+        while (v < least && !__atomic_compare_exchange_n(&first_vertex[r], &least, uint32_t(v), true,
+                                                         __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
         }
-        level.vertex_cluster[v] = root_cluster[r];
-    }
+    });
+    std::vector<std::pair<uint64_t, uint32_t>> order;  // (Z-order code of the cell, first vertex) per cluster
+    for (size_t r = 0; r < n; ++r)
+        if (first_vertex[r] != UINT32_MAX) order.push_back({z_order(key[first_vertex[r]]), first_vertex[r]});
     std::vector<glm::ivec3>().swap(key);
+    const uint32_t clusters = uint32_t(order.size());
+    sort_in_parallel(order);
+    std::vector<uint32_t>& root_cluster = first_vertex;  // now each root's cluster
+    parallel_for(clusters, [&](size_t k) { root_cluster[root[order[k].second]] = uint32_t(k); });
+    std::vector<std::pair<uint64_t, uint32_t>>().swap(order);
+    level.vertex_cluster.resize(n);
+    parallel_for(n, [&](size_t v) { level.vertex_cluster[v] = root_cluster[root[v]]; });
+    std::vector<uint32_t>().swap(root);
     std::vector<uint32_t>().swap(root_cluster);
-    std::vector<uint32_t> rank(clusters);
-    for (uint32_t k = 0; k < clusters; ++k) rank[k] = k;
-    std::stable_sort(rank.begin(), rank.end(), [&](uint32_t a, uint32_t b) { return order[a] < order[b]; });
-    std::vector<uint64_t>().swap(order);
-    std::vector<uint32_t> renumbered(clusters);
-    for (uint32_t k = 0; k < clusters; ++k) renumbered[rank[k]] = k;
-    std::vector<uint32_t>().swap(rank);
-    parallel_for(n, [&](size_t v) { level.vertex_cluster[v] = renumbered[level.vertex_cluster[v]]; });
 
+    // Each cluster's sums over its vertices in vertex order, as one thread would make them: each
+    // thread scans every vertex and sums those of its own range of clusters.
     level.area.assign(clusters, 0.0f);
     level.normal_sum.assign(clusters, glm::vec3(0.0f));
     std::vector<glm::vec3> area_position(clusters, glm::vec3(0.0f));
     level.centroid.assign(clusters, glm::vec3(0.0f));  // plain position sums first
     std::vector<uint32_t> count(clusters, 0);
-    for (size_t v = 0; v < n; ++v) {
-        const uint32_t k = level.vertex_cluster[v];
-        const float a = point_areas[v];
-        level.area[k] += a;
-        area_position[k] += a * mesh.positions[v];
-        level.normal_sum[k] += a * normals[v];
-        level.centroid[k] += mesh.positions[v];
-        ++count[k];
-    }
-    for (uint32_t k = 0; k < clusters; ++k)
+    const size_t ranges = std::max<size_t>(1, std::min<size_t>(thread_count(), clusters / 4096));
+    parallel_for(ranges, [&](size_t part) {
+        const uint32_t lo = uint32_t(clusters * part / ranges), hi = uint32_t(clusters * (part + 1) / ranges);
+        for (size_t v = 0; v < n; ++v) {
+            const uint32_t k = level.vertex_cluster[v];
+            if (k < lo || k >= hi) continue;
+            const float a = point_areas[v];
+            level.area[k] += a;
+            area_position[k] += a * mesh.positions[v];
+            level.normal_sum[k] += a * normals[v];
+            level.centroid[k] += mesh.positions[v];
+            ++count[k];
+        }
+    }, 1);
+    parallel_for(clusters, [&](size_t k) {
         level.centroid[k] = level.area[k] > 0 ? area_position[k] / level.area[k] : level.centroid[k] / float(count[k]);
+    });
 
-    // Adjacency: count, fill, then sort and drop repeats within each row.
+    // Adjacency: count, fill (on the threads, in whatever order they come), then sort and drop
+    // repeats within each row: the rows are sets, the same whatever the threads did.
     const std::vector<uint32_t>& vc = level.vertex_cluster;
     std::vector<uint32_t> offsets(clusters + 1, 0);
-    for_each_edge(mesh, [&](uint32_t a, uint32_t b) {
+    for_each_edge_in_parallel(mesh, [&](uint32_t a, uint32_t b) {
         if (vc[a] != vc[b]) {
-            ++offsets[vc[a] + 1];
-            ++offsets[vc[b] + 1];
+            __atomic_fetch_add(&offsets[vc[a] + 1], 1u, __ATOMIC_RELAXED);
+            __atomic_fetch_add(&offsets[vc[b] + 1], 1u, __ATOMIC_RELAXED);
         }
     });
     for (uint32_t k = 0; k < clusters; ++k) offsets[k + 1] += offsets[k];
     std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1), adj(offsets.back());
-    for_each_edge(mesh, [&](uint32_t a, uint32_t b) {
+    for_each_edge_in_parallel(mesh, [&](uint32_t a, uint32_t b) {
         if (vc[a] != vc[b]) {
-            adj[fill[vc[a]]++] = vc[b];
-            adj[fill[vc[b]]++] = vc[a];
+            adj[__atomic_fetch_add(&fill[vc[a]], 1u, __ATOMIC_RELAXED)] = vc[b];
+            adj[__atomic_fetch_add(&fill[vc[b]], 1u, __ATOMIC_RELAXED)] = vc[a];
         }
     });
-    level.adj_offsets.assign(clusters + 1, 0);
-    uint32_t out = 0;  // compacted in place: row k starts at or after where its old row did
-    for (uint32_t k = 0; k < clusters; ++k) {
+    std::vector<uint32_t>& kept = fill;  // each row's length without repeats
+    parallel_for(clusters, [&](size_t k) {
         auto first = adj.begin() + offsets[k], last = adj.begin() + offsets[k + 1];
         std::sort(first, last);
-        last = std::unique(first, last);
-        for (auto it = first; it != last; ++it) adj[out++] = *it;
-        level.adj_offsets[k + 1] = out;
-    }
-    adj.resize(out);
-    adj.shrink_to_fit();
-    level.adj = std::move(adj);
+        kept[k] = uint32_t(std::unique(first, last) - first);
+    });
+    level.adj_offsets.assign(clusters + 1, 0);
+    for (uint32_t k = 0; k < clusters; ++k) level.adj_offsets[k + 1] = level.adj_offsets[k] + kept[k];
+    level.adj.resize(level.adj_offsets.back());
+    parallel_for(clusters, [&](size_t k) {
+        std::copy_n(adj.begin() + offsets[k], kept[k], level.adj.begin() + level.adj_offsets[k]);
+    });
     return level;
 }
-
 }  // namespace kappa
