@@ -232,18 +232,26 @@ void fit_level_heights(const ClusterLevel& level, const std::vector<glm::vec3>& 
     // height = mean over the cluster's vertices of n . d + II(t, t) / 2; the
     // mean of n . d is zero at the area-weighted centroid, but is kept: the
     // centroid's float sums round.
-    std::vector<double> sum(level.size(), 0.0), weight(level.size(), 0.0);
-    for (size_t v = 0; v < positions.size(); ++v) {
-        const uint32_t q = level.vertex_cluster[v];
-        if (q >= level.size() || !fields.valid[q] || !(point_areas[v] > 0)) continue;
-        const glm::vec3 d = positions[v] - level.centroid[q];
-        const glm::vec3& n = fields.value[q].normal;
-        sum[q] += double(point_areas[v]) * (glm::dot(n, d) + 0.5f * sym3_eval(fields.value[q].curvature, d, d));
-        weight[q] += point_areas[v];
-    }
-    fields.height.assign(level.size(), 0.0f);
-    for (size_t q = 0; q < level.size(); ++q)
+    // Each cluster's sums in vertex order whatever the threads: each thread scans every vertex and
+    // sums those of its own range of clusters.
+    const size_t clusters = level.size();
+    std::vector<double> sum(clusters, 0.0), weight(clusters, 0.0);
+    const size_t ranges = std::max<size_t>(1, std::min<size_t>(thread_count(), clusters / 4096));
+    parallel_for(ranges, [&](size_t part) {
+        const size_t lo = clusters * part / ranges, hi = clusters * (part + 1) / ranges;
+        for (size_t v = 0; v < positions.size(); ++v) {
+            const uint32_t q = level.vertex_cluster[v];
+            if (q < lo || q >= hi || !fields.valid[q] || !(point_areas[v] > 0)) continue;
+            const glm::vec3 d = positions[v] - level.centroid[q];
+            const glm::vec3& n = fields.value[q].normal;
+            sum[q] += double(point_areas[v]) * (glm::dot(n, d) + 0.5f * sym3_eval(fields.value[q].curvature, d, d));
+            weight[q] += point_areas[v];
+        }
+    }, 1);
+    fields.height.assign(clusters, 0.0f);
+    parallel_for(clusters, [&](size_t q) {
         if (weight[q] > 0) fields.height[q] = float(sum[q] / weight[q]);
+    });
 }
 
 }  // namespace kappa
