@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -188,6 +189,11 @@ TEST_CASE("a view saved as .xf renders the same with kappa render --xf", "[viewe
         REQUIRE(headless.height == viewer.height);
         CHECK(mean_difference(viewer, 0, headless, 0, viewer.width, viewer.height) < 1.0);
     }
+    // The orbit's and the zoom's fields were sent to the GPU (in slices, MeshBuffers::begin_upload)
+    // before their screenshots: wait-compute waits for the last slice.
+    const size_t landed = run.result.output.find("new fields landed ");
+    REQUIRE(landed != std::string::npos);
+    CHECK(std::atoi(run.result.output.c_str() + landed + std::strlen("new fields landed ")) >= 2);
     // Zooming changed the picture (not the same image twice).
     CHECK(mean_difference(run.image("orbited.png"), 0, run.image("zoomed.png"), 0, kWidth - kPanel, kHeight) > 5.0);
     CHECK(mean_difference(run.image("zoomed.png"), 0, run.image("raw.png"), 0, kWidth - kPanel, kHeight) > 0.05);
