@@ -205,6 +205,38 @@ std::vector<size_t> unfitted_levels(const ScaleSpace& space, float lo, float hi)
 
 }  // namespace
 
+namespace {
+
+// The vertices grouped by their cluster of `level`, each group in vertex order (a counting sort).
+void make_visit_order(ScaleSpace& space, size_t level) {
+    const ClusterLevel& c = space.clusters[level];
+    std::vector<uint32_t> start(c.size() + 1, 0);
+    for (const uint32_t k : c.vertex_cluster) ++start[k + 1];
+    for (size_t k = 0; k < c.size(); ++k) start[k + 1] += start[k];
+    space.visit_order.resize(c.vertex_cluster.size());
+    for (size_t v = 0; v < c.vertex_cluster.size(); ++v) space.visit_order[start[c.vertex_cluster[v]]++] = uint32_t(v);
+    space.visit_order_level = level;
+}
+
+// Calls body(v) for the vertices [first, last) on the threads: in the space's visit order when it
+// covers them all and the finest level the scales sigma[v] read has over a 64th as many clusters
+// as there are vertices (then its clusters' values are what misses the cache: on a 17.8M-face
+// mesh the fine normals took 1.9-2.0 s instead of 2.8-3.0 s; coarser levels stay in the cache,
+// and the vertices' own arrays read and written out of order cost more: 2.3-2.9 s instead of
+// 1.9 s for its fields at 12 px).
+template <typename Body>
+void for_vertices(const ScaleSpace& space, const std::vector<float>& sigma, size_t first, size_t last, Body&& body) {
+    bool ordered = first == 0 && last == space.visit_order.size() && last > 0;
+    if (ordered) {
+        const auto [lo, hi] = std::minmax_element(sigma.begin(), sigma.end());
+        const std::vector<size_t> read = blended_levels(space, *lo, *hi);
+        ordered = !read.empty() && space.clusters[read.front()].size() * 64 >= last;
+    }
+    parallel_for(last - first, [&](size_t k) { body(ordered ? size_t(space.visit_order[k]) : first + k); }, 2048);
+}
+
+}  // namespace
+
 void fit_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, const std::vector<size_t>& todo) {
     // Clustering runs on one thread per level: build the levels side by side.
     parallel_for(todo.size(), [&](size_t k) {
@@ -213,6 +245,8 @@ void fit_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, c
             space.clusters[i] =
                 build_surface_clusters(mesh, raw.point_areas, raw.normals, space.origin, space.level_scale(i));
     }, 1);
+    if (!todo.empty() && *std::min_element(todo.begin(), todo.end()) < space.visit_order_level)
+        make_visit_order(space, *std::min_element(todo.begin(), todo.end()));
     for (size_t i : todo) space.levels[i] = fit_level(space.clusters[i]);
     parallel_for(todo.size(), [&](size_t k) {
         const size_t i = todo[k];
@@ -324,8 +358,7 @@ void blend_fields(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
                   const std::vector<float>& sigma, size_t first, size_t last, SurfaceFields& out) {
     prepare_cache(mesh, space, space.tensor_values, sigma, first, last);
     const bool has_raw = raw.has_curvature();
-    parallel_for(last - first, [&](size_t k) {
-        const size_t v = first + k;
+    for_vertices(space, sigma, first, last, [&](size_t v) {
         VertexBlend b;
         if (!blend_vertex<Blend::Tensors>(mesh, space, raw, v, sigma[v], b)) return;
         Sym3 tensor;
@@ -347,7 +380,7 @@ void blend_fields(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields
         out.normals[v] = n;
         diagonalize_tensor(u, w, n, restrict_to(tensor, u, w), out.d1[v], out.d2[v], out.k1[v], out.k2[v]);
         out.dcurv[v] = restrict_to(dcurv, out.d1[v], out.d2[v]);
-    }, 2048);
+    });
 }
 
 SurfaceFields fields_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,
@@ -362,18 +395,17 @@ std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, con
                                         const std::vector<float>& sigma) {
     fit_levels_for(mesh, space, raw, sigma);
     std::vector<glm::vec3> out = raw.normals;
-    parallel_for(mesh.vertex_count(), [&](size_t v) {
+    for_vertices(space, sigma, 0, mesh.vertex_count(), [&](size_t v) {
         VertexBlend b;
         if (blend_vertex<Blend::Normals>(mesh, space, raw, v, sigma[v], b)) out[v] = b.normal;
-    }, 2048);
+    });
     return out;
 }
 
 void blend_surface(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
                    const std::vector<float>& sigma, size_t first, size_t last, SurfaceAtScale& out) {
     prepare_cache(mesh, space, space.surface_values, sigma, first, last);
-    parallel_for(last - first, [&](size_t k) {
-        const size_t v = first + k;
+    for_vertices(space, sigma, first, last, [&](size_t v) {
         VertexBlend b;
         if (!blend_vertex<Blend::Positions>(mesh, space, raw, v, sigma[v], b)) return;
         out.normals[v] = b.normal;
@@ -385,7 +417,7 @@ void blend_surface(const Mesh& mesh, const ScaleSpace& space, const SurfaceField
         const float len = glm::length(shift);
         if (len > sigma[v]) shift *= sigma[v] / len;
         if (std::isfinite(len)) out.positions[v] += shift;
-    }, 2048);
+    });
 }
 
 SurfaceAtScale surface_at_scale(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw,

@@ -51,6 +51,11 @@ struct ScaleSpace {
     mutable LevelValueCache tensor_values{20, LevelValueCache::curvature_budget_bytes()},
         surface_values{8, LevelValueCache::curvature_budget_bytes() / 3};
     void keep_level_values(bool on) { tensor_values.enable(on), surface_values.enable(on); }
+    // The vertices cluster by cluster of the finest level built (clusters run along a Z-order
+    // curve: surface_clusters.h): the order in which the blends visit them, so that each
+    // neighbourhood of clusters they read is in the cache. Any order gives the same values.
+    std::vector<uint32_t> visit_order;
+    size_t visit_order_level = SIZE_MAX;  // the level it follows
 
     bool empty() const { return levels.empty(); }
     float level_scale(size_t level) const { return std::ldexp(first_cell, int(level)); }
