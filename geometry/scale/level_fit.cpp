@@ -236,9 +236,7 @@ void fit_level_heights(const ClusterLevel& level, const std::vector<glm::vec3>& 
     // sums those of its own range of clusters.
     const size_t clusters = level.size();
     std::vector<double> sum(clusters, 0.0), weight(clusters, 0.0);
-    const size_t ranges = std::max<size_t>(1, std::min<size_t>(thread_count(), clusters / 4096));
-    parallel_for(ranges, [&](size_t part) {
-        const size_t lo = clusters * part / ranges, hi = clusters * (part + 1) / ranges;
+    parallel_for_ranges(clusters, [&](size_t lo, size_t hi) {
         for (size_t v = 0; v < positions.size(); ++v) {
             const uint32_t q = level.vertex_cluster[v];
             if (q < lo || q >= hi || !fields.valid[q] || !(point_areas[v] > 0)) continue;
@@ -247,7 +245,7 @@ void fit_level_heights(const ClusterLevel& level, const std::vector<glm::vec3>& 
             sum[q] += double(point_areas[v]) * (glm::dot(n, d) + 0.5f * sym3_eval(fields.value[q].curvature, d, d));
             weight[q] += point_areas[v];
         }
-    }, 1);
+    }, 4096);
     fields.height.assign(clusters, 0.0f);
     parallel_for(clusters, [&](size_t q) {
         if (weight[q] > 0) fields.height[q] = float(sum[q] / weight[q]);

@@ -108,9 +108,7 @@ ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& 
     std::vector<glm::vec3> area_position(clusters, glm::vec3(0.0f));
     level.centroid.assign(clusters, glm::vec3(0.0f));  // plain position sums first
     std::vector<uint32_t> count(clusters, 0);
-    const size_t ranges = std::max<size_t>(1, std::min<size_t>(thread_count(), clusters / 4096));
-    parallel_for(ranges, [&](size_t part) {
-        const uint32_t lo = uint32_t(clusters * part / ranges), hi = uint32_t(clusters * (part + 1) / ranges);
+    parallel_for_ranges(clusters, [&](size_t lo, size_t hi) {
         for (size_t v = 0; v < n; ++v) {
             const uint32_t k = level.vertex_cluster[v];
             if (k < lo || k >= hi) continue;
@@ -121,7 +119,7 @@ ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& 
             level.centroid[k] += mesh.positions[v];
             ++count[k];
         }
-    }, 1);
+    }, 4096);
     parallel_for(clusters, [&](size_t k) {
         level.centroid[k] = level.area[k] > 0 ? area_position[k] / level.area[k] : level.centroid[k] / float(count[k]);
     });
