@@ -227,8 +227,9 @@ void ViewerApp::request_view_fields() {
 }
 
 // New fields reach the GPU in slices over several frames, each frame's
-// share a quarter of a frame (at least 4 ms): a 17.8M-face mesh's 890 MB
-// would hold one frame for half a second on a GPU (MeshBuffers::begin_upload).
+// share a quarter of the median frame (at least 4 ms): sent at once, a
+// 17.8M-face mesh's 890 MB held one frame for half a second on llvmpipe
+// (MeshBuffers::begin_upload; docs/gpu.md).
 void ViewerApp::continue_field_upload(std::chrono::steady_clock::time_point since) {
     const double budget_s = std::max(0.004, 0.25e-3 * double(median(frame_ms_)));
     while (!renderer_->continue_field_upload(size_t(8) << 20))
