@@ -63,12 +63,7 @@ void MeshBuffers::build(const Mesh& mesh, const std::vector<uint8_t>& flags, Fac
     bounds_ = bounding_sphere(mesh);
     back_faces_ = back_face_visibility(mesh);
 
-    glGenBuffers(1, &vertex_buffer_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(GpuVertex)), nullptr, GL_DYNAMIC_DRAW);
-    glGenBuffers(1, &position_buffer_);
-    glBindBuffer(GL_ARRAY_BUFFER, position_buffer_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
+    make_vertex_buffers(vertex_buffer_, position_buffer_);
     // Triangles in cluster order, so the contour pass can draw runs of them,
     // and vertices in order of first use by those triangles, so a run's
     // vertices lie close together (for the GL's vertex fetch and the CPU
@@ -138,8 +133,7 @@ void MeshBuffers::adopt(FieldUpload&& u) {
 }
 
 void MeshBuffers::upload(FieldUpload&& u) {
-    if (u.vertices.size() != vertex_count_ || u.copy.positions.size() != vertex_count_)
-        throw std::invalid_argument("MeshBuffers: upload for a different mesh");
+    check_upload(u);
     drop_pending();
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(u.vertices.size() * sizeof(GpuVertex)), u.vertices.data());
@@ -150,22 +144,28 @@ void MeshBuffers::upload(FieldUpload&& u) {
 }
 
 void MeshBuffers::begin_upload(FieldUpload&& u) {
-    if (u.vertices.size() != vertex_count_ || u.copy.positions.size() != vertex_count_)
-        throw std::invalid_argument("MeshBuffers: upload for a different mesh");
+    check_upload(u);
     drop_pending();
     pending_ = std::make_unique<PendingUpload>();
     pending_->fields = std::move(u);
     // Into the buffers the last fields but one were drawn from, once there are some: a
     // software GL clears a new buffer (llvmpipe: 0.15-0.7 s for 890 MB).
-    if (!spare_vertex_buffer_) {
-        glGenBuffers(1, &spare_vertex_buffer_);
-        glBindBuffer(GL_ARRAY_BUFFER, spare_vertex_buffer_);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(GpuVertex)), nullptr, GL_DYNAMIC_DRAW);
-        glGenBuffers(1, &spare_position_buffer_);
-        glBindBuffer(GL_ARRAY_BUFFER, spare_position_buffer_);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
-        glBindBuffer(GL_ARRAY_BUFFER, 0);
-    }
+    if (!spare_vertex_buffer_) make_vertex_buffers(spare_vertex_buffer_, spare_position_buffer_);
+}
+
+void MeshBuffers::make_vertex_buffers(GLuint& records, GLuint& positions) const {
+    glGenBuffers(1, &records);
+    glBindBuffer(GL_ARRAY_BUFFER, records);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(GpuVertex)), nullptr, GL_DYNAMIC_DRAW);
+    glGenBuffers(1, &positions);
+    glBindBuffer(GL_ARRAY_BUFFER, positions);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertex_count_ * sizeof(glm::vec3)), nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void MeshBuffers::check_upload(const FieldUpload& u) const {
+    if (u.vertices.size() != vertex_count_ || u.copy.positions.size() != vertex_count_)
+        throw std::invalid_argument("MeshBuffers: upload for a different mesh");
 }
 
 bool MeshBuffers::upload_step(size_t bytes) {

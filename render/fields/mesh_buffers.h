@@ -124,6 +124,10 @@ private:
     void build(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
     // Makes the uploaded fields current: their CPU copy, bounds and version.
     void adopt(FieldUpload&& uploaded);
+    // A buffer for the vertex records and one for the positions alone, of this mesh's size, unfilled.
+    void make_vertex_buffers(GLuint& records, GLuint& positions) const;
+    // Throws std::invalid_argument when an upload is for another mesh.
+    void check_upload(const FieldUpload& u) const;
     // Points the vertex arrays at vertex_buffer_ and position_buffer_.
     void bind_vertex_arrays();
     void drop_pending();
