@@ -121,9 +121,8 @@ bool cached_level_value(const ScaleSpace& space, size_t l, uint32_t v, const glm
     return true;
 }
 
-// Before a blend of vertices [first, last) at scales sigma: room in `cache` for the levels it reads.
-void prepare_cache(const Mesh& mesh, const ScaleSpace& space, LevelValueCache& cache, const std::vector<float>& sigma,
-                   size_t first, size_t last);
+// Before a blend that reads the levels `read`: room in `cache` for those of them that are fitted.
+void prepare_cache(const Mesh& mesh, const ScaleSpace& space, LevelValueCache& cache, std::vector<size_t> read);
 
 // Level coordinate of a scale: -1 for the raw estimate, l for level l,
 // linear in log sigma in between; clamped to the top level.
@@ -185,11 +184,15 @@ std::vector<size_t> blended_levels(const ScaleSpace& space, float lo, float hi) 
     return levels;
 }
 
-void prepare_cache(const Mesh& mesh, const ScaleSpace& space, LevelValueCache& cache, const std::vector<float>& sigma,
-                   size_t first, size_t last) {
-    if (!cache.enabled() || first >= last) return;
+// The levels that the scales sigma[v] of vertices [first, last) blend from.
+std::vector<size_t> levels_read(const ScaleSpace& space, const std::vector<float>& sigma, size_t first, size_t last) {
+    if (first >= last) return {};
     const auto [lo, hi] = std::minmax_element(sigma.begin() + long(first), sigma.begin() + long(last));
-    std::vector<size_t> read = blended_levels(space, *lo, *hi);
+    return blended_levels(space, *lo, *hi);
+}
+
+void prepare_cache(const Mesh& mesh, const ScaleSpace& space, LevelValueCache& cache, std::vector<size_t> read) {
+    if (!cache.enabled() || read.empty()) return;
     read.erase(std::remove_if(read.begin(), read.end(), [&](size_t l) { return !space.levels[l].fitted(); }),
                read.end());
     cache.prepare(space.levels.size(), mesh.vertex_count(), read);
@@ -219,19 +222,15 @@ void make_visit_order(ScaleSpace& space, size_t level) {
 }
 
 // Calls body(v) for the vertices [first, last) on the threads: in the space's visit order when it
-// covers them all and the finest level the scales sigma[v] read has over a 64th as many clusters
+// covers them all and the finest of the levels `read` has over a 64th as many clusters
 // as there are vertices (then its clusters' values are what misses the cache: on a 17.8M-face
 // mesh the fine normals took 1.9-2.0 s instead of 2.8-3.0 s; coarser levels stay in the cache,
 // and the vertices' own arrays read and written out of order cost more: 2.3-2.9 s instead of
 // 1.9 s for its fields at 12 px).
 template <typename Body>
-void for_vertices(const ScaleSpace& space, const std::vector<float>& sigma, size_t first, size_t last, Body&& body) {
-    bool ordered = first == 0 && last == space.visit_order.size() && last > 0;
-    if (ordered) {
-        const auto [lo, hi] = std::minmax_element(sigma.begin(), sigma.end());
-        const std::vector<size_t> read = blended_levels(space, *lo, *hi);
-        ordered = !read.empty() && space.clusters[read.front()].size() * 64 >= last;
-    }
+void for_vertices(const ScaleSpace& space, const std::vector<size_t>& read, size_t first, size_t last, Body&& body) {
+    const bool ordered = first == 0 && last == space.visit_order.size() && !read.empty() &&
+                         space.clusters[read.front()].size() * 64 >= last;
     parallel_for(last - first, [&](size_t k) { body(ordered ? size_t(space.visit_order[k]) : first + k); }, 2048);
 }
 
@@ -245,8 +244,9 @@ void fit_levels(const Mesh& mesh, ScaleSpace& space, const SurfaceFields& raw, c
             space.clusters[i] =
                 build_surface_clusters(mesh, raw.point_areas, raw.normals, space.origin, space.level_scale(i));
     }, 1);
-    if (!todo.empty() && *std::min_element(todo.begin(), todo.end()) < space.visit_order_level)
-        make_visit_order(space, *std::min_element(todo.begin(), todo.end()));
+    if (const auto finest = std::min_element(todo.begin(), todo.end());
+        finest != todo.end() && *finest < space.visit_order_level)
+        make_visit_order(space, *finest);
     for (size_t i : todo) space.levels[i] = fit_level(space.clusters[i]);
     parallel_for(todo.size(), [&](size_t k) {
         const size_t i = todo[k];
@@ -356,9 +356,10 @@ SurfaceFields fields_to_blend(const Mesh& mesh, const SurfaceFields& raw) {
 
 void blend_fields(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
                   const std::vector<float>& sigma, size_t first, size_t last, SurfaceFields& out) {
-    prepare_cache(mesh, space, space.tensor_values, sigma, first, last);
+    const std::vector<size_t> read = levels_read(space, sigma, first, last);
+    prepare_cache(mesh, space, space.tensor_values, read);
     const bool has_raw = raw.has_curvature();
-    for_vertices(space, sigma, first, last, [&](size_t v) {
+    for_vertices(space, read, first, last, [&](size_t v) {
         VertexBlend b;
         if (!blend_vertex<Blend::Tensors>(mesh, space, raw, v, sigma[v], b)) return;
         Sym3 tensor;
@@ -395,7 +396,8 @@ std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, con
                                         const std::vector<float>& sigma) {
     fit_levels_for(mesh, space, raw, sigma);
     std::vector<glm::vec3> out = raw.normals;
-    for_vertices(space, sigma, 0, mesh.vertex_count(), [&](size_t v) {
+    const size_t n = mesh.vertex_count();
+    for_vertices(space, levels_read(space, sigma, 0, n), 0, n, [&](size_t v) {
         VertexBlend b;
         if (blend_vertex<Blend::Normals>(mesh, space, raw, v, sigma[v], b)) out[v] = b.normal;
     });
@@ -404,8 +406,9 @@ std::vector<glm::vec3> normals_at_scale(const Mesh& mesh, ScaleSpace& space, con
 
 void blend_surface(const Mesh& mesh, const ScaleSpace& space, const SurfaceFields& raw,
                    const std::vector<float>& sigma, size_t first, size_t last, SurfaceAtScale& out) {
-    prepare_cache(mesh, space, space.surface_values, sigma, first, last);
-    for_vertices(space, sigma, first, last, [&](size_t v) {
+    const std::vector<size_t> read = levels_read(space, sigma, first, last);
+    prepare_cache(mesh, space, space.surface_values, read);
+    for_vertices(space, read, first, last, [&](size_t v) {
         VertexBlend b;
         if (!blend_vertex<Blend::Positions>(mesh, space, raw, v, sigma[v], b)) return;
         out.normals[v] = b.normal;

@@ -16,11 +16,12 @@ namespace {
 // Each interior edge is visited once (from the face where a < b); an open
 // boundary edge only when its face lists it that way round, which at worst
 // splits a cluster along the boundary.
+// Over the faces [first, last).
 template <typename Fn>
-void for_each_edge(const Mesh& mesh, Fn&& fn) {
-    for (const Face& f : mesh.faces)
+void for_each_edge(const Mesh& mesh, size_t first, size_t last, Fn&& fn) {
+    for (size_t f = first; f < last; ++f)
         for (int e = 0; e < 3; ++e) {
-            const uint32_t a = f[e], b = f[(e + 1) % 3];
+            const uint32_t a = mesh.faces[f][e], b = mesh.faces[f][(e + 1) % 3];
             if (a < b) fn(a, b);
         }
 }
@@ -43,13 +44,8 @@ uint64_t z_order(glm::ivec3 cell) {
 // for_each_edge over blocks of faces on the threads: fn must be safe to call from several at once.
 template <typename Fn>
 void for_each_edge_in_parallel(const Mesh& mesh, Fn&& fn) {
-    parallel_for_chunks(mesh.face_count(), [&](size_t first, size_t last) {
-        for (size_t f = first; f < last; ++f)
-            for (int e = 0; e < 3; ++e) {
-                const uint32_t a = mesh.faces[f][e], b = mesh.faces[f][(e + 1) % 3];
-                if (a < b) fn(a, b);
-            }
-    }, 65536);
+    parallel_for_chunks(mesh.face_count(), [&](size_t first, size_t last) { for_each_edge(mesh, first, last, fn); },
+                        65536);
 }
 
 // Sorts distinct pairs: halves sorted on two threads, then merged.
@@ -71,7 +67,7 @@ ClusterLevel build_surface_clusters(const Mesh& mesh, const std::vector<float>& 
     parallel_for(n, [&](size_t v) { key[v] = glm::ivec3(glm::floor((mesh.positions[v] - origin) / cell)); });
 
     UnionFind uf(n);
-    for_each_edge(mesh, [&](uint32_t a, uint32_t b) {
+    for_each_edge(mesh, 0, mesh.face_count(), [&](uint32_t a, uint32_t b) {
         if (key[a] == key[b]) uf.unite(a, b);
     });
 
