@@ -173,7 +173,13 @@ TEST_CASE("the page draws a colour map's bar and hatching as kappa render does",
 // in and back out, the drawing is kappa render's again. Measured 2026-11-27
 // at load 8 to 9 on the 2-core machine: 9 to 18 slices per preparation, the
 // longest 23 to 42 ms, 0.15 to 0.24 of the preparation's work (the deepest
-// zoom in once 72 ms: the raw curvature, one step).
+// zoom in once 72 ms: the raw curvature, one step). Since the scale space's
+// clusters run along a Z-order curve and fine blends visit the vertices
+// cluster by cluster (session 16, 2-core machine, quiet): zooming in 8
+// slices of 98-101 ms of work; zooming back out, which blends the levels'
+// values kept from the first view, 4-5 slices of 52-69 ms, and once (fresh
+// CI machine) 3 slices of 39 ms, the longest 18 ms: the slices are as long
+// as before, there is less to cut.
 TEST_CASE("the page prepares a new view's fields in slices and then draws what kappa render draws", "[web]") {
     const std::string out = test::temp_dir();
     drive_page(mesh_folder({"bunny.ply"}), out,
@@ -187,7 +193,7 @@ TEST_CASE("the page prepares a new view's fields in slices and then draws what k
         const double longest = std::stod((*it)[2]), work = std::stod((*it)[3]);
         INFO("preparation " << preparations << ": " << slices << " slices, the longest " << longest << " ms of "
                             << work << " ms");
-        CHECK(slices >= 4);
+        CHECK(slices >= (preparations == 0 ? 4 : 3));  // zooming in fits levels; back out reads kept values
         CHECK(longest <= 0.5 * work);
         CHECK(longest <= 150.0);
         ++preparations;
