@@ -13,12 +13,10 @@
 // pass. Degenerate faces make their corners candidates; faces with repeated
 // or missing corners are no edges' faces and are left out.
 //
-// Threads store r without locking (a locked exchange per vertex would stall
-// every read in flight): two faces met at once by two threads may both store
-// theirs, and faces compared with the one overwritten. Each store is kept in
-// its block's list, and a vertex whose r is no longer the one a store wrote
-// becomes a candidate: every face was compared with its vertices' final r,
-// or such a store exists.
+// A vertex's r is stored once, by a compare-and-exchange from "none": of two
+// threads meeting a vertex's first faces at once, one stores its r and the
+// other compares with it. A candidate's r is replaced by a mark that nothing
+// overwrites, so later faces around it are not compared at all.
 //
 // Limitations: which normal a vertex's r holds may depend on the threads'
 // timing, so the set of candidates may differ from run to run (the creases
@@ -28,9 +26,11 @@
 
 #include "mesh.h"
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -40,29 +40,55 @@ namespace kappa {
 
 class CreaseCandidates {
 public:
-    // Faces come in `blocks` blocks, each taken in by one thread at a time.
-    CreaseCandidates(size_t vertex_count, float angle_deg, size_t blocks);
-    // Takes in a valid face (is_valid_face) of `block` and its face_cross (creases.h).
-    void add_face(const Face& face, glm::vec3 cross, size_t block);
+    CreaseCandidates(size_t vertex_count, float angle_deg);
+    // Takes in a valid face (is_valid_face) and its face_cross (creases.h); any thread.
+    void add_face(const Face& face, glm::vec3 cross) {
+        if (everywhere_) return;
+        // As face_normal: no normal where the float length is 0 or not finite (edge_bends.cpp gives such a
+        // face no angle): its corners are candidates, for the exact pass to see.
+        const float length2 = glm::dot(cross, cross);
+        const bool degenerate = !(length2 > 0 && std::isfinite(length2));
+        for (int k = 0; k < 3; ++k) {
+            std::atomic<uint16_t>& reference = reference_[face[k]];
+            uint16_t packed = reference.load(std::memory_order_relaxed);
+            if (packed == kCandidate) continue;
+            if (degenerate) {
+                reference.store(kCandidate, std::memory_order_relaxed);
+                continue;
+            }
+            if (packed == kNone) {  // the first face here: store r, or take the one another thread just stored
+                const uint16_t mine = pack_reference(cross);
+                if (reference.compare_exchange_strong(packed, mine, std::memory_order_relaxed)) packed = mine;
+                if (packed == kCandidate) continue;
+            }
+            // The angle between the face's normal n and r is at most the half angle: cos^2 >= cos^2(half) and
+            // cos > 0, with cos = c.r / (|c| |r|) for the cross product c, squared to keep off roots and
+            // divisions. r's components are small integers (|r|^2 is exact); a product that underflows
+            // fails the test: a candidate.
+            const glm::vec3 r = unpack(packed);
+            const float d = glm::dot(cross, r);
+            if (!(d > 0 && d * d >= cos2_half_ * length2 * glm::dot(r, r)))
+                reference.store(kCandidate, std::memory_order_relaxed);
+        }
+    }
     // Asks for vertex v's reference to be fetched (a face's corners some faces ahead).
     void prefetch(uint32_t v) const { __builtin_prefetch(&reference_[v]); }
     // The candidates, in increasing order, once every face is in.
     std::vector<uint32_t> vertices();
 
 private:
-    uint16_t store_reference(uint32_t v, glm::vec3 direction, size_t block);
+    static constexpr uint16_t kNone = 0;       // no r stored yet
+    static constexpr uint16_t kCandidate = 1;  // bit 15 clear: no packed r
+    // r packed in 16 bits: three signed 5-bit components under a set bit 15 (crease_candidates.cpp).
+    static uint16_t pack_reference(glm::vec3 direction);
+    static float component(uint32_t packed, int k) { return float(int32_t(packed << (27 - 5 * k)) >> 27); }
+    static glm::vec3 unpack(uint32_t packed) { return {component(packed, 0), component(packed, 1), component(packed, 2)}; }
 
     size_t vertex_count_;
     bool everywhere_;   // no margin left: every vertex is a candidate
     float cos2_half_;  // the squared cosine of the half angle less the margin
-    std::unique_ptr<std::atomic<uint16_t>[]> reference_;  // packed r, 0 while none
-    std::unique_ptr<std::atomic<uint8_t>[]> candidate_;
-    // Per block: (vertex << 32 | packed r) it stored. A cache line each: two threads appending to
-    // neighbouring blocks' lists would otherwise pass one line to and fro at every store.
-    struct alignas(64) Stores {
-        std::vector<uint64_t> list;
-    };
-    std::vector<Stores> stored_;
+    // Packed r (bit 15 set), kNone while none, kCandidate once the vertex is a candidate.
+    std::unique_ptr<std::atomic<uint16_t>[]> reference_;
 };
 
 }  // namespace kappa

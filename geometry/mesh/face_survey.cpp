@@ -21,7 +21,7 @@ FaceSurvey survey_faces(const Mesh& mesh, float crease_angle_deg) {
     constexpr size_t kBlock = 65536;  // faces; block sums joined in order: independent of the thread count
     constexpr size_t kAhead = 16;     // faces
     std::vector<EnclosedVolumes> partial((nf + kBlock - 1) / kBlock);
-    if (crease_angle_deg > 0) candidates.emplace(nv, crease_angle_deg, partial.size());
+    if (crease_angle_deg > 0) candidates.emplace(nv, crease_angle_deg);
     parallel_for_chunks(
         partial.size(),
         [&](size_t first, size_t last) {
@@ -39,7 +39,7 @@ FaceSurvey survey_faces(const Mesh& mesh, float crease_angle_deg) {
                     const Face& face = mesh.faces[f];
                     const double v = tetrahedron_volume6(mesh, face, centroid);
                     signed_sum += v, unsigned_sum += std::fabs(v);
-                    if (candidates && is_valid_face(face, nv)) candidates->add_face(face, face_cross(mesh, face), b);
+                    if (candidates && is_valid_face(face, nv)) candidates->add_face(face, face_cross(mesh, face));
                 }
                 partial[b] = {signed_sum, unsigned_sum};
             }
