@@ -63,6 +63,17 @@ int main(int argc, char** argv) {
         kappa::split_at_creases(mesh, resolved.creases, &rows);
     });
     time_it("  rows copy", runs, [&] { kappa::VertexFaces rows = vf; });
+    {
+        kappa::Mesh m;
+        kappa::VertexFaces rows;
+        kappa::SplitMesh split;
+        time_it("split alone (rows given)", runs,
+                [&] { split = kappa::split_at_creases(std::move(m), resolved.creases, &rows); }, 24, [&] {
+                    split = {};
+                    m.positions.reserve(kappa::positions_room(mesh.vertex_count()));  // as a reader leaves it
+                    m.positions = mesh.positions, m.faces = mesh.faces, rows = vf;
+                });
+    }
     time_it("default view (rows given)", runs, [&] { kappa::default_view_as_read(mesh, std::nullopt, false, &vf); });
     time_it("  default view (before)", runs, [&] { kappa::default_view_as_read(mesh); });
     // As app/mesh_source.cpp's prepare_for_drawing and app/mesh_drawing.cpp: the copies stand for the

@@ -13,12 +13,16 @@ namespace kappa::bench {
 
 // Runs `body` once untimed (warm-up), then `runs` timed times; prints each
 // wall time, then the medians of wall time and of process CPU time (all
-// threads; less sensitive to other load on a shared machine).
-inline void time_it(const char* label, int runs, const std::function<void()>& body, int label_width = 24) {
+// threads; less sensitive to other load on a shared machine). `setup`, when
+// given, runs untimed before each run of body (fresh inputs for it).
+inline void time_it(const char* label, int runs, const std::function<void()>& body, int label_width = 24,
+                    const std::function<void()>& setup = {}) {
+    if (setup) setup();
     body();
     std::vector<double> ms, cpu_ms;
     std::printf("%-*s", label_width, label);
     for (int r = 0; r < runs; ++r) {
+        if (setup) setup();
         const auto t0 = std::chrono::steady_clock::now();
         const std::clock_t c0 = std::clock();
         body();

@@ -124,7 +124,7 @@ bool read_vertices_fast(const char*& pos, const char* end, const PlyElement& ele
         fail_truncated(ctx);
     }
     size_t n = size_t(element.count);
-    reserve_prefaulted(out, n);
+    reserve_prefaulted(out, positions_room(n));
     out.resize(n);
     if (n == 0) {
         // nothing to copy (and memcpy must not see the null data())
@@ -282,7 +282,7 @@ void read_body(Source& source, const PlyHeader& header, const std::string& name,
                         break;
                     }
                 }
-                reserve_prefaulted(mesh.positions, size_t(e.count));
+                reserve_prefaulted(mesh.positions, positions_room(size_t(e.count)));
                 read_element(source, plan, ctx, [&](const double* xyz, const int64_t*, size_t) {
                     mesh.positions.emplace_back(to_float(xyz[0]), to_float(xyz[1]), to_float(xyz[2]));
                 });

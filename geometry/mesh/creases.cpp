@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 
 namespace kappa {
@@ -99,22 +100,28 @@ void move_corners(VertexFaces& vf, std::vector<std::pair<uint32_t, uint32_t>> mo
     for (const auto& m : moves) losing.push_back(original[m.second]);
     std::sort(losing.begin(), losing.end());
     losing.erase(std::unique(losing.begin(), losing.end()), losing.end());
-    // Rows before the first of them stay where they are; later ones shift down.
-    uint32_t out = vf.begin(losing.front());
-    auto next_losing = losing.begin();
-    for (size_t v = losing.front(); v < first_copy; ++v) {
-        const uint32_t begin = vf.begin(v), end = vf.end(v);
-        vf.offsets[v] = out;
-        if (next_losing != losing.end() && *next_losing == v) {
-            ++next_losing;
-            for (uint32_t k = begin; k < end; ++k)
-                if (!is_moved(vf.corners[k])) vf.corners[out++] = vf.corners[k];
-        } else {
-            if (out != begin)  // shifting down: a forward copy is safe
-                std::copy(vf.corners.begin() + begin, vf.corners.begin() + end, vf.corners.begin() + out);
-            out += end - begin;
-        }
+    // Rows before the first of them stay where they are. Each losing row keeps its other corners; the
+    // rows between two losing ones shift down by the corners lost so far, in one move.
+    uint32_t lost = 0;
+    auto shift_rows = [&](size_t first, size_t last) {  // [first, last): untouched rows
+        if (lost == 0 || first >= last) return;
+        const uint32_t begin = vf.offsets[first], end = vf.offsets[last];
+        std::memmove(vf.corners.data() + begin - lost, vf.corners.data() + begin, size_t(end - begin) * 4);
+        for (size_t v = first; v < last; ++v) vf.offsets[v] -= lost;
+    };
+    size_t next_row = losing.front();
+    for (const uint32_t v : losing) {
+        shift_rows(next_row, v);
+        const uint32_t begin = vf.offsets[v], end = vf.offsets[v + 1];
+        uint32_t kept = begin - lost;
+        vf.offsets[v] = kept;
+        for (uint32_t k = begin; k < end; ++k)
+            if (!is_moved(vf.corners[k])) vf.corners[kept++] = vf.corners[k];
+        lost = end - kept;
+        next_row = v + 1;
     }
+    shift_rows(next_row, first_copy);
+    uint32_t out = vf.offsets[first_copy] - lost;
     // The copies' rows: corners in increasing order, as build_vertex_faces gives.
     std::sort(moves.begin(), moves.end(), [](const auto& a, const auto& b) {
         return a.second != b.second ? a.second < b.second : a.first < b.first;
@@ -142,7 +149,7 @@ std::vector<uint64_t> crease_corners(const VertexFaces& vf, const std::vector<ui
 SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, VertexFaces* vf) {
     SplitMesh out;
     const size_t nv = mesh.vertex_count();
-    io::reserve_prefaulted(out.original, nv);  // big buffers: their pages mapped up front (prefault.h)
+    io::reserve_prefaulted(out.original, positions_room(nv));  // big buffers: their pages mapped up front (prefault.h)
     out.original.resize(nv);
     for (size_t v = 0; v < nv; ++v) out.original[v] = uint32_t(v);
     if (creases.empty()) {  // most scans: no copy

@@ -21,4 +21,9 @@ struct Mesh {
     size_t face_count() const { return faces.size(); }
 };
 
+// The room a reader reserves for n positions: n and a little more, for the
+// vertex copies a split along creases appends (creases.h), which would
+// otherwise move the whole array (tens of ms on a mesh of millions).
+inline size_t positions_room(size_t n) { return n + n / 256 + 64; }
+
 }  // namespace kappa
