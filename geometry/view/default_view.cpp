@@ -39,17 +39,57 @@ std::array<glm::vec3, kBins> bin_directions() {
     return dirs;
 }
 
-// Face centroids weighted by area, every step-th face (those with a finite
-// centroid and a positive area): the samples of the front tests below.
+// Every step-th face (step = ceil(F / kMaxSampledFaces): a deterministic
+// sample of big meshes), its corners' numbers and positions gathered once
+// for every test below (in parallel: on big meshes they lie all over
+// memory), in the coordinates the tests work in (see turned_into).
+struct FaceSampling {
+    size_t step = 1;
+    std::vector<Face> faces;                         // the sampled faces' corners
+    std::vector<std::array<glm::vec3, 3>> corners;  // their positions
+};
+
+size_t sampling_step(const Mesh& mesh) {
+    return std::max<size_t>(1, (mesh.face_count() + kMaxSampledFaces - 1) / kMaxSampledFaces);
+}
+
+FaceSampling sample_faces(const Mesh& mesh) {
+    FaceSampling s;
+    s.step = sampling_step(mesh);
+    const size_t n = (mesh.face_count() + s.step - 1) / s.step;
+    s.faces.resize(n), s.corners.resize(n);
+    parallel_for_chunked(
+        n,
+        [&](size_t i) {
+            if (i + 16 < n)
+                for (int k = 0; k < 3; ++k) __builtin_prefetch(&mesh.positions[mesh.faces[(i + 16) * s.step][k]]);
+            const Face& t = mesh.faces[i * s.step];
+            s.faces[i] = t;
+            for (int k = 0; k < 3; ++k) s.corners[i][size_t(k)] = mesh.positions[t[k]];
+        },
+        4096);
+    return s;
+}
+
+// A point in the coordinates of frame f (view_frame): right, up, front.
+glm::vec3 in_frame(const ViewFrame& f, glm::vec3 p) { return {glm::dot(p, f.right), glm::dot(p, f.up), glm::dot(p, f.front)}; }
+
+FaceSampling turned_into(const ViewFrame& f, FaceSampling s) {
+    for (std::array<glm::vec3, 3>& c : s.corners)
+        for (glm::vec3& p : c) p = in_frame(f, p);
+    return s;
+}
+
+// Face centroids weighted by area, of the sampled faces with a finite
+// centroid and a positive area: the samples of the front tests below.
 struct FaceSample {
     glm::vec3 p;
     double w;
 };
-std::vector<FaceSample> face_samples(const Mesh& mesh, size_t step) {
+std::vector<FaceSample> face_samples(const FaceSampling& sampling) {
     std::vector<FaceSample> samples;
-    for (size_t f = 0; f < mesh.face_count(); f += step) {
-        const Face& t = mesh.faces[f];
-        const glm::vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    for (const std::array<glm::vec3, 3>& corners : sampling.corners) {
+        const glm::vec3 a = corners[0], b = corners[1], c = corners[2];
         const double w = 0.5 * glm::length(glm::cross(b - a, c - a));
         const glm::vec3 p = (a + b + c) / 3.0f;
         if (!(w > 0) || !std::isfinite(w) || !std::isfinite(p.x + p.y + p.z)) continue;
@@ -60,20 +100,20 @@ std::vector<FaceSample> face_samples(const Mesh& mesh, size_t step) {
 
 // Animals, figures and vehicles are longer than wide and carry their tallest
 // parts at their front end: a head, horns, ears, a cab. The surface is
-// sampled by face centroids weighted by area (every step-th face). Its long
+// sampled by face centroids weighted by area (face_samples). Its long
 // horizontal axis is the principal axis of the xz second moments; when it is
 // clearly the long one (moment ratio at least 1.5) and the top fifth of the
 // model (by height) sits towards one of its ends (its centroid at least 0.2
 // of the model's half-length along the axis from the whole's), that end is
 // the front and the unit xz direction towards it is returned. Otherwise (a
 // cube, a vase, a part with a level top) there is no front: 0.
-glm::vec2 front_of_upright_model(const Mesh& mesh, size_t step) {
+glm::vec2 front_of_upright_model(const std::vector<FaceSample>& face_samples) {
     struct Sample { glm::dvec2 xz; float y; double w; };
     std::vector<Sample> samples;
     float y_min = INFINITY, y_max = -INFINITY;
     glm::dvec2 centroid(0);
     double total = 0;
-    for (const FaceSample& fs : face_samples(mesh, step)) {
+    for (const FaceSample& fs : face_samples) {
         const glm::vec3 p = fs.p;
         const double w = fs.w;
         samples.push_back({glm::dvec2(p.x, p.z), p.y, w});
@@ -119,7 +159,7 @@ struct UpEvidence {
     double extent[3] = {};
 };
 
-UpEvidence up_evidence(const Mesh& mesh, size_t step) {
+UpEvidence up_evidence(const Mesh& mesh, const FaceSampling& sampling) {
     UpEvidence e;
     const PositionBounds box = position_bounds(mesh.positions);
     if (box.empty()) return e;
@@ -128,9 +168,8 @@ UpEvidence up_evidence(const Mesh& mesh, size_t step) {
     for (int k = 0; k < 3; ++k) e.extent[k] = size[k];
     const double cos_flat = std::cos(glm::radians(5.0));
     double total = 0;
-    for (size_t f = 0; f < mesh.face_count(); f += step) {
-        const Face& t = mesh.faces[f];
-        const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+    for (const std::array<glm::vec3, 3>& corners : sampling.corners) {
+        const glm::dvec3 a(corners[0]), b(corners[1]), c(corners[2]);
         const glm::dvec3 n = glm::cross(b - a, c - a);
         const double w = 0.5 * glm::length(n);
         if (!(w > 0) || !std::isfinite(w)) continue;
@@ -154,7 +193,7 @@ UpEvidence up_evidence(const Mesh& mesh, size_t step) {
 // A face (default_view.h): the model is mirror-symmetric about a vertical
 // plane and, along that plane's horizontal direction f, one end is pointed
 // (a nose) and the other round (the back of a head). Samples: face
-// centroids weighted by area (every step-th face). Symmetry of a plane: the
+// centroids weighted by area (face_samples). Symmetry of a plane: the
 // share of the surface whose mirror image lands in a cell of a 32-cell grid
 // (on the longest side) next to a cell the surface occupies; the best of the
 // planes every 5 degrees must reach 0.95. An end's bluntness: the share of
@@ -162,9 +201,8 @@ UpEvidence up_evidence(const Mesh& mesh, size_t step) {
 // Among the planes within 0.02 of the best symmetry whose one end has at
 // most a third of the other's bluntness, the most symmetric: its pointed
 // end is the face. Returns the unit xz direction towards it, else 0.
-glm::vec2 front_of_face(const Mesh& mesh, size_t step) {
+glm::vec2 front_of_face(const std::vector<FaceSample>& samples) {
     using Sample = FaceSample;
-    const std::vector<Sample> samples = face_samples(mesh, step);
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     glm::dvec3 centroid(0);
     double total = 0;
@@ -269,9 +307,10 @@ glm::vec3 view_direction(ViewAngles a, glm::vec3 up) {
     return glm::normalize(d.x * f.right + d.y * f.up + d.z * f.front);
 }
 
-glm::vec3 choose_up(const Mesh& mesh, bool denoised) {
-    const size_t step = std::max<size_t>(1, (mesh.face_count() + kMaxSampledFaces - 1) / kMaxSampledFaces);
-    const UpEvidence e = up_evidence(mesh, step);
+namespace {
+
+glm::vec3 up_of(const Mesh& mesh, const FaceSampling& sampling, bool denoised) {
+    const UpEvidence e = up_evidence(mesh, sampling);
     const double largest = std::max({e.extent[0], e.extent[1], e.extent[2]});
     const double base = e.flat[2][0];
     const bool long_z = e.extent[2] >= 2 * e.extent[0] && e.extent[2] >= 2 * e.extent[1];
@@ -284,24 +323,34 @@ glm::vec3 choose_up(const Mesh& mesh, bool denoised) {
     return z_up || stands ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
 }
 
+ViewAngles angles_in(const Mesh& mesh, const ViewFrame& frame, const FaceSampling& sampling, const VertexFaces* vf);
+
+// The angles about frame.up; `sampling` in the mesh's own coordinates.
+ViewAngles angles_about(const Mesh& mesh, const ViewFrame& frame, const FaceSampling& sampling, const VertexFaces* vf) {
+    if (frame.up == glm::vec3(0, 1, 0)) return angles_in(mesh, frame, sampling, vf);
+    return angles_in(mesh, frame, turned_into(frame, sampling), vf);  // the y-up rules apply as they are
+}
+
+}  // namespace
+
+glm::vec3 choose_up(const Mesh& mesh, bool denoised) { return up_of(mesh, sample_faces(mesh), denoised); }
+
 ViewAngles choose_default_view(const Mesh& mesh, glm::vec3 up, const VertexFaces* vf) {
-    const ViewFrame f = view_frame(up);
-    if (f.up == glm::vec3(0, 1, 0)) return choose_default_view(mesh, vf);
-    // The mesh in the frame's coordinates: the y-up rules apply as they are.
-    Mesh turned;
-    turned.faces = mesh.faces;
-    turned.positions.reserve(mesh.positions.size());
-    for (const glm::vec3& p : mesh.positions)
-        turned.positions.push_back({glm::dot(p, f.right), glm::dot(p, f.up), glm::dot(p, f.front)});
-    return choose_default_view(turned, vf);
+    return angles_about(mesh, view_frame(up), sample_faces(mesh), vf);
+}
+
+ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
+    return angles_about(mesh, ViewFrame{}, sample_faces(mesh), vf);
 }
 
 DefaultView default_view_as_read(const Mesh& mesh, std::optional<glm::vec3> up, bool denoised,
                                  const VertexFaces* vf) {
+    const FaceSampling sampling = sample_faces(mesh);  // shared by the up axis and the angles
     DefaultView v;
-    const glm::vec3 u = up ? *up : choose_up(mesh, denoised);
-    v.up = view_frame(u).up;
-    v.angles = choose_default_view(mesh, v.up, vf);
+    const glm::vec3 u = up ? *up : up_of(mesh, sampling, denoised);
+    const ViewFrame frame = view_frame(u);
+    v.up = frame.up;
+    v.angles = angles_about(mesh, frame, sampling, vf);
     v.eye = view_direction(v.angles, v.up);
     return v;
 }
@@ -322,11 +371,17 @@ std::optional<glm::vec3> file_up_axis(const std::string& path) {
     return std::nullopt;
 }
 
-ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
+namespace {
+
+// The angles in frame's coordinates (the y-up rules), sampling in them too.
+ViewAngles angles_in(const Mesh& mesh, const ViewFrame& frame, const FaceSampling& sampling, const VertexFaces* vf) {
+    const bool turned = frame.up != glm::vec3(0, 1, 0);
+    auto position = [&](uint32_t v) { return turned ? in_frame(frame, mesh.positions[v]) : mesh.positions[v]; };
     // Vertex normals (area-weighted face normals, summed in face order), for how much each face bends:
     // all of them at once, or from the vertex-face rows only those of the sampled faces (below).
     auto area_normal = [&](const Face& t) {
-        return glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+        const glm::vec3 p0 = position(t[0]);
+        return glm::cross(position(t[1]) - p0, position(t[2]) - p0);
     };
     auto summed_normal = [&](uint32_t v) {  // from the rows: the same sum, in the same order
         glm::vec3 sum(0.0f);
@@ -340,17 +395,14 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
     // bending: how far the vertex normals turn from the face's, per unit of
     // length (a curvature, so detail draws the eye: faces, hands, ears).
     const auto dirs = bin_directions();
-    const size_t step = std::max<size_t>(1, (mesh.face_count() + kMaxSampledFaces - 1) / kMaxSampledFaces);
-    // Each sampled face on its own (in parallel: they lie all over memory), then those with an area kept.
-    const size_t samples = (mesh.face_count() + step - 1) / step;
+    const size_t samples = sampling.corners.size();
     std::vector<glm::vec3> area_normals(samples);
     std::vector<uint8_t> bin(samples);
     parallel_for_chunked(
         samples,
         [&](size_t i) {
-            const Face& t = mesh.faces[i * step];
-            const glm::vec3 c = 0.5f * glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                                  mesh.positions[t[2]] - mesh.positions[t[0]]);
+            const std::array<glm::vec3, 3>& p = sampling.corners[i];
+            const glm::vec3 c = 0.5f * glm::cross(p[1] - p[0], p[2] - p[0]);
             const float a = glm::length(c);
             int best = 0;
             for (int b = 1; b < kBins; ++b)
@@ -359,39 +411,12 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
             bin[i] = uint8_t(best);
         },
         4096);
-    std::vector<uint32_t> sampled;  // their faces
-    size_t kept = 0;
-    for (size_t i = 0; i < samples; ++i)
-        if (area_normals[i] != glm::vec3(0.0f)) {
-            area_normals[kept] = area_normals[i], bin[kept++] = bin[i];
-            sampled.push_back(uint32_t(i * step));
-        }
-    area_normals.resize(kept), bin.resize(kept);
     // With the rows, when one face in 24 or fewer is sampled (meshes of 4.8M faces or more: the sampled
-    // faces' corners then have about 18 / 24 of the faces around them, each fetched from anywhere): the
-    // normals of those vertices alone, in vertex order and in parallel (the faces of a vertex a few ahead
-    // fetched early). Otherwise every face adds its normal to its corners', in one sweep.
-    const bool from_rows = vf && step >= 24 && !sampled.empty();
-    std::vector<uint32_t> sampled_vertices;
-    std::vector<glm::vec3> sampled_normals;
-    if (from_rows) {
-        for (const uint32_t f : sampled)
-            for (int k = 0; k < 3; ++k) sampled_vertices.push_back(mesh.faces[f][k]);
-        std::sort(sampled_vertices.begin(), sampled_vertices.end());
-        sampled_vertices.erase(std::unique(sampled_vertices.begin(), sampled_vertices.end()), sampled_vertices.end());
-        sampled_normals.resize(sampled_vertices.size());
-        const size_t n = sampled_vertices.size();
-        parallel_for_chunked(
-            n,
-            [&](size_t i) {
-                if (i + 16 < n) __builtin_prefetch(&vf->corners[vf->begin(sampled_vertices[i + 16])]);
-                if (i + 8 < n)
-                    for (uint32_t k = vf->begin(sampled_vertices[i + 8]); k < vf->end(sampled_vertices[i + 8]); ++k)
-                        __builtin_prefetch(&mesh.faces[vf->corners[k] / 3]);
-                sampled_normals[i] = summed_normal(sampled_vertices[i]);
-            },
-            4096);
-    }
+    // faces' corners then have about 18 / 24 of the faces around them, each fetched from anywhere, and
+    // seldom share a corner): the normals of their corners alone, in parallel (the faces around the
+    // corners of a face a few ahead fetched early). Otherwise every face adds its normal to its corners',
+    // in one sweep.
+    const bool from_rows = vf && sampling.step >= 24;
     std::vector<glm::vec3> vertex_normals;
     if (!from_rows) {
         vertex_normals.assign(mesh.vertex_count(), glm::vec3(0.0f));
@@ -401,29 +426,41 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
             for (int k = 0; k < 3; ++k) vertex_normals[t[k]] += c;
         }
     }
-    auto vertex_normal = [&](uint32_t v) {
-        if (!from_rows) return vertex_normals[v];
-        return sampled_normals[size_t(std::lower_bound(sampled_vertices.begin(), sampled_vertices.end(), v) -
-                                      sampled_vertices.begin())];
-    };
     // Each face's bending on its own.
-    std::vector<float> bending(sampled.size());
+    std::vector<float> bending(samples);
     parallel_for_chunked(
-        sampled.size(),
+        samples,
         [&](size_t i) {
-            const Face& t = mesh.faces[sampled[i]];
+            if (area_normals[i] == glm::vec3(0.0f)) return;
+            if (from_rows) {
+                if (i + 16 < samples)
+                    for (int k = 0; k < 3; ++k) __builtin_prefetch(&vf->corners[vf->begin(sampling.faces[i + 16][k])]);
+                if (i + 8 < samples)
+                    for (int k = 0; k < 3; ++k) {
+                        const uint32_t v = sampling.faces[i + 8][k];
+                        for (uint32_t j = vf->begin(v); j < vf->end(v); ++j) __builtin_prefetch(&mesh.faces[vf->corners[j] / 3]);
+                    }
+            }
+            const Face& t = sampling.faces[i];
+            const std::array<glm::vec3, 3>& p = sampling.corners[i];
             const glm::vec3 c = area_normals[i];
             const float a = glm::length(c);
             float turn = 0, perimeter = 0;
             for (int k = 0; k < 3; ++k) {
-                const glm::vec3 n = vertex_normal(t[k]);
+                const glm::vec3 n = from_rows ? summed_normal(t[k]) : vertex_normals[t[k]];
                 const float ln = glm::length(n);
                 if (ln > 0) turn += glm::length(n / ln - c / a);
-                perimeter += glm::length(mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]);
+                perimeter += glm::length(p[size_t((k + 1) % 3)] - p[size_t(k)]);
             }
             bending[i] = perimeter > 0 ? 3.0f * turn / perimeter : 0.0f;
         },
         1024);
+    // The faces with an area.
+    size_t kept = 0;
+    for (size_t i = 0; i < samples; ++i)
+        if (area_normals[i] != glm::vec3(0.0f))
+            area_normals[kept] = area_normals[i], bin[kept] = bin[i], bending[kept++] = bending[i];
+    area_normals.resize(kept), bin.resize(kept), bending.resize(kept);
 
     // Candidates in tie-breaking order.
     std::vector<ViewAngles> candidates;
@@ -438,8 +475,9 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
         candidates.push_back({-165, el});
     }
     if (area_normals.empty()) return {30, 20};
-    glm::vec2 front = front_of_upright_model(mesh, step);
-    const bool face = front == glm::vec2(0) && (front = front_of_face(mesh, step)) != glm::vec2(0);
+    const std::vector<FaceSample> centroids = face_samples(sampling);
+    glm::vec2 front = front_of_upright_model(centroids);
+    const bool face = front == glm::vec2(0) && (front = front_of_face(centroids)) != glm::vec2(0);
 
     std::vector<double> entropy(candidates.size()), projected(candidates.size()), detail(candidates.size());
     parallel_for(candidates.size(), [&](size_t c) {  // each candidate on its own: the same sums on any thread
@@ -483,5 +521,7 @@ ViewAngles choose_default_view(const Mesh& mesh, const VertexFaces* vf) {
     if (front != glm::vec2(0) && towards_front(best) < (face ? 0.64f : -0.5f)) best = best_of(0.64f);
     return candidates[best];
 }
+
+}  // namespace
 
 }  // namespace kappa
