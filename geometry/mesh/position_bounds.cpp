@@ -16,11 +16,12 @@ PositionBounds position_bounds(const std::vector<glm::vec3>& positions) {
     parallel_for_chunked(
         blocks.size(),
         [&](size_t b) {
-            PositionBounds& out = blocks[b];
+            PositionBounds out;  // in registers: stored through a reference, every step waited on the last
             for (size_t v = b * kBlock; v < std::min(n, (b + 1) * kBlock); ++v) {
                 const glm::vec3 p = positions[v];
                 if (std::isfinite(p.x + p.y + p.z)) out.lo = glm::min(out.lo, p), out.hi = glm::max(out.hi, p);
             }
+            blocks[b] = out;
         },
         1);
     PositionBounds all;
