@@ -4,6 +4,7 @@
 #include "geometry/mesh/creases.h"
 #include "geometry/curvature/feature_size.h"
 #include "geometry/view/default_view.h"
+#include "render/fields/mesh_buffers.h"
 #include "render/render_settings.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/curvature/vertex_flags.h"
@@ -156,9 +157,28 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
         std::lock_guard<std::mutex> lock(mutex_);
         done_completion_ = std::move(c);
     }
-    const render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *fields, scales);
+    render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *fields, scales);
+    if (!r.clusters) {  // a first view: its triangles clustered here too
+        auto first = std::make_shared<ViewResult::First>();
+        first->clusters = render::MeshBuffers::face_clusters_of(d.mesh);
+        first->upload = render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, first->clusters);
+        first->fields = std::move(d);
+        out.first = std::move(first);
+        return out;
+    }
     out.upload = render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, *r.clusters);
     return out;
+}
+
+void BackgroundCompute::run_pending_view(std::unique_lock<std::mutex>& lock) {
+    if (!pending_view_) return;
+    ViewRequest view = std::move(*pending_view_);
+    pending_view_.reset();
+    lock.unlock();
+    ViewResult result = execute_view(view);
+    lock.lock();
+    done_view_ = std::move(result);
+    view_busy_ = bool(pending_view_);
 }
 
 void BackgroundCompute::run() {
@@ -169,13 +189,7 @@ void BackgroundCompute::run() {
             wake_.wait(lock, [this] { return quit_ || pending_ || pending_view_; });
             if (quit_) return;
             if (!pending_) {  // a view's fields; models first
-                ViewRequest view = std::move(*pending_view_);
-                pending_view_.reset();
-                lock.unlock();
-                ViewResult result = execute_view(view);
-                lock.lock();
-                done_view_ = std::move(result);
-                view_busy_ = bool(pending_view_);
+                run_pending_view(lock);
                 continue;
             }
             request = std::move(*pending_);
@@ -194,6 +208,8 @@ void BackgroundCompute::run() {
             if (to_complete) {  // after the frame that shows the model
                 frame_since_result_ = false;
                 wake_.wait(lock, [this] { return quit_ || pending_ || frame_since_result_; });
+                // A big model's first view (asked for as the model arrived) goes before the completion.
+                if (!quit_ && !pending_) run_pending_view(lock);
             }
             if (quit_) return;
             if (pending_) continue;  // a newer model is wanted: never mind completing this one

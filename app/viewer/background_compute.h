@@ -70,12 +70,13 @@ public:
 
     // Fields at the detail scale of a new view, prepared for upload
     // (render/fields/field_upload.h), for the model already shown. A newer request
-    // replaces an older one not yet started.
+    // replaces an older one not yet started. Without clusters, a model's first
+    // view: its fields come back whole (ViewResult::first), for Renderer::set_mesh.
     struct ViewRequest {
         std::shared_ptr<const Mesh> mesh;
         std::shared_ptr<const SurfaceFields> fields;
         std::shared_ptr<render::DetailSource> detail;
-        std::shared_ptr<const FaceClusters> clusters;
+        std::shared_ptr<const FaceClusters> clusters;  // of the fields shown; null: a first view
         render::Camera camera;
         int height = 1;
         float detail_px = 0;
@@ -83,6 +84,14 @@ public:
     struct ViewResult {
         std::shared_ptr<const Mesh> mesh;  // whose fields these are
         render::FieldUpload upload;
+        // A first view instead: its fields, triangles clustered and upload prepared whole
+        // (Renderer::set_mesh's second form), so that the window's thread only sends them.
+        struct First {
+            render::DetailFields fields;
+            FaceClusters clusters;
+            render::FieldUpload upload;
+        };
+        std::shared_ptr<First> first;
         render::Camera camera;
         int height = 1;
         float detail_px = 0;
@@ -135,6 +144,8 @@ private:
     void run();
     Result execute(const Request& request);
     ViewResult execute_view(const ViewRequest& request);
+    // Runs a pending view request, if any (the lock held on entry and on return).
+    void run_pending_view(std::unique_lock<std::mutex>& lock);
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -238,7 +239,8 @@ PanelRequests draw_panel(ViewState& state, PanelState& panel, const PanelInfo& i
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("no multisampling while dragging when frames take over 33 ms");
     lines_section(state.settings);
     surface_section(state.settings, info.map_range);
-    r.recompute = smoothing_section(state.smoothing, info.model, info.computing, info.progress, info.stage);
+    r.recompute = smoothing_section(state.smoothing, info.model, info.computing && info.progress >= 0, info.progress,
+                                    info.stage);
     mesh_section(info);
     file_section(panel, r);
     if (!panel.message.empty()) ImGui::TextWrapped("%s", panel.message.c_str());
@@ -285,8 +287,13 @@ void draw_progress_overlay(const PanelInfo& info, float ui_scale) {
     ImGui::Begin("##progress", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
     char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "%s %d%%", info.stage.c_str(), int(info.progress * 100));
-    ImGui::ProgressBar(info.progress, ImVec2(-1, 0), overlay);
+    if (info.progress >= 0) {
+        std::snprintf(overlay, sizeof overlay, "%s %d%%", info.stage.c_str(), int(info.progress * 100));
+        ImGui::ProgressBar(info.progress, ImVec2(-1, 0), overlay);
+    } else {  // no fraction known: a bar that keeps moving
+        std::snprintf(overlay, sizeof overlay, "%s", info.stage.c_str());
+        ImGui::ProgressBar(float(std::fmod(ImGui::GetTime() * 0.5, 1.0)), ImVec2(-1, 0), overlay);
+    }
     ImGui::End();
 }
 

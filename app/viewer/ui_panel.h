@@ -29,7 +29,7 @@ struct PanelInfo {
     float map_range = 1;           // of the current colour map, from the renderer
     float upload_s = 0, first_frame_s = 0;
     bool computing = false;
-    float progress = 0;
+    float progress = 0;  // of the worker's job, in [0, 1]; negative: not known (a first view's fields)
     std::string stage;
     float frame_ms = 0;    // median of recent frames
     std::string gl;        // renderer description

@@ -22,6 +22,10 @@ namespace {
 
 // Meshes from this size on get a first frame without MSAA (about half the time in software).
 constexpr size_t kQuickFirstFrameFaces = 500000;
+// Meshes from this size on get their first view's detail fields from the worker, as later views
+// do: made on this thread they froze the window (about 1 s for bunny-1M, 20 s for 17.8M faces on
+// 2 cores).
+constexpr size_t kFirstViewOnWorkerFaces = 1000000;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -124,7 +128,7 @@ void ViewerApp::wait_for_events() {
         glfwPollEvents();  // orbiting: as many frames as the machine draws
     } else if (renderer_->field_upload_pending()) {
         glfwPollEvents();  // new fields on their way to the GPU, a slice a frame
-    } else if (compute_.busy() || renderer_->hatching_pending()) {
+    } else if (compute_.busy() || first_view_pending_ || renderer_->hatching_pending()) {
         glfwWaitEventsTimeout(0.05);  // the progress bar moves; the computation gets the cores
     } else if (options_.scripted() || redraw_frames_ > 0) {
         glfwPollEvents();
@@ -168,7 +172,16 @@ void ViewerApp::adopt_results() {
         panel_.open_path = model_->path;
     }
     // The first view's detail fields are made here, so the first frame is
-    // already right; later views get theirs from the worker.
+    // already right; later views get theirs from the worker. A big mesh's
+    // too: the frames until they come show the progress (and the drawing
+    // before, if any).
+    first_view_pending_ = false;
+    if (effective_detail() > 0 && model_->mesh->face_count() >= kFirstViewOnWorkerFaces) request_first_view();
+    else show_model();
+}
+
+// The model's fields for the current view, made on this thread.
+void ViewerApp::show_model() {
     const auto t = std::chrono::steady_clock::now();
     shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
     const auto complete_fields = [&] {  // on this thread: only small meshes or rare views need it
@@ -190,6 +203,29 @@ void ViewerApp::adopt_results() {
     upload_s_ = float(seconds_since(t));
 }
 
+void ViewerApp::request_first_view() {
+    first_view_pending_ = true;
+    shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
+    compute_.request_view({model_->mesh, model_->fields, model_->detail, nullptr, shown_.camera, shown_.height,
+                           shown_.detail});
+}
+
+// A big model's first view from the worker, its upload prepared there: sent whole, as
+// adopt_results sends the others'.
+void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera,
+                                int height) {
+    const auto t = std::chrono::steady_clock::now();
+    renderer_->set_mesh(first.fields.mesh, first.fields.fields.flags, std::move(first.clusters),
+                        std::move(first.upload));
+    renderer_->set_creases(model_->crease_points);
+    face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
+    upload_s_ = float(seconds_since(t));
+    shown_ = {shown_.detail, camera, height};
+    first_view_pending_ = false;
+    quick_frame_ = model_->mesh->face_count() >= kQuickFirstFrameFaces;
+    redraw_frames_ = 2;
+}
+
 float ViewerApp::effective_detail() const {
     const SmoothingOptions& w = state_.smoothing;
     // As in `kappa render`: explicit widths, or another estimator than the default, draw the raw fields.
@@ -202,9 +238,20 @@ float ViewerApp::effective_detail() const {
 // height or detail setting, the worker prepares new ones (never while
 // dragging: the frame after the release asks).
 void ViewerApp::request_view_fields() {
+    if (first_view_pending_) {
+        if (auto done = compute_.take_view(); done && done->first) {
+            if (done->mesh == model_->mesh && done->detail_px == effective_detail())
+                show_first_view(*done->first, done->camera, done->height);
+            else if (effective_detail() > 0)
+                request_first_view();  // the settings changed meanwhile: again with the new ones
+            else
+                first_view_pending_ = false, show_model();  // detail off: the model's own fields
+        }
+        if (first_view_pending_) return;
+    }
     if (!model_ || !renderer_->mesh()) return;
     if (auto done = compute_.take_view()) {
-        if (done->mesh == model_->mesh && done->detail_px == effective_detail()) {
+        if (!done->first && done->mesh == model_->mesh && done->detail_px == effective_detail()) {
             const auto t = std::chrono::steady_clock::now();
             renderer_->begin_field_upload(std::move(done->upload));
             continue_field_upload(t);
@@ -297,9 +344,9 @@ void ViewerApp::draw_frame() {
     info.map_range = renderer_->mesh() ? renderer_->mesh()->map_range(state_.settings.colormap) : 1.0f;
     info.upload_s = upload_s_;
     info.first_frame_s = first_frame_s_;
-    info.computing = compute_.busy();
-    info.progress = compute_.progress();
-    info.stage = compute_.stage();
+    info.computing = compute_.busy() || first_view_pending_;
+    info.progress = compute_.busy() ? compute_.progress() : -1.0f;  // a first view's fields: no fraction known
+    info.stage = compute_.busy() ? compute_.stage() : "detail fields for the view";
     info.frame_ms = median(frame_ms_);
     info.gl = window_->description();
     const float scale = window_->content_scale();
@@ -315,14 +362,18 @@ void ViewerApp::draw_frame() {
         save_screenshot(pending_screenshot_->value, pending_screenshot_->flag);
         pending_screenshot_.reset();
     }
-    if (model_ && !first_frame_drawn_) {
+    if (model_ && first_view_pending_) ++frames_before_first_view_;
+    if (model_ && !first_view_pending_ && !first_frame_drawn_) {
         glFinish();
         first_frame_drawn_ = true;
         first_frame_s_ = float(seconds_since(options_.start));
         std::printf("%s: %zu vertices, %zu faces; first frame at %.3f s (load %.3f s, curvature %.3f s, "
-                    "upload %.3f s)\n",
+                    "upload %.3f s)",
                     model_->path.empty() ? "built-in model" : model_->path.c_str(), model_->mesh->vertex_count(),
                     model_->mesh->face_count(), first_frame_s_, model_->load_s, model_->fields_s, upload_s_);
+        if (frames_before_first_view_ > 0)
+            std::printf("; %zu frames drawn while the worker made its fields", frames_before_first_view_);
+        std::printf("\n");
         std::fflush(stdout);
     }
     window_->swap_buffers();

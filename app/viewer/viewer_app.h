@@ -57,6 +57,9 @@ private:
     void draw_frame();
     void adopt_results();
     float effective_detail() const;  // the detail setting, 0 while explicit smoothing widths override it
+    void show_model();                // the adopted model drawn, its first view's fields made here
+    void request_first_view();        // ... or made by the worker (big meshes)
+    void show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera, int height);
     void request_view_fields();      // new detail fields when the view's scale changed
     void continue_field_upload(std::chrono::steady_clock::time_point since);
     bool view_fields_stale() const;  // the fields on the GPU are for another scale or direction of view
@@ -117,6 +120,8 @@ private:
     glm::ivec2 last_view_size_{0};
     float upload_s_ = 0, first_frame_s_ = 0;
     bool first_frame_drawn_ = false;
+    bool first_view_pending_ = false;  // a big model's first view fields are on their way from the worker
+    size_t frames_before_first_view_ = 0;  // drawn meanwhile (the first model's)
 
     // Scripted runs.
     size_t step_ = 0;

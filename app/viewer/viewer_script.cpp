@@ -27,7 +27,8 @@ bool ViewerApp::script_step() {
             if (--frames_left_ == 0) ++step_;
             return true;
         case ScriptStep::WaitCompute:
-            if (compute_.busy() || compute_.view_busy() || view_fields_stale() || renderer_->field_upload_pending())
+            if (compute_.busy() || compute_.view_busy() || first_view_pending_ || view_fields_stale() ||
+                renderer_->field_upload_pending())
                 return true;
             break;
         case ScriptStep::WaitHatching:
