@@ -63,6 +63,11 @@ void Renderer::set_mesh(const Mesh& mesh, const std::vector<uint8_t>& flags, Fac
     mesh_ = std::make_unique<MeshBuffers>(mesh, flags, std::move(clusters), std::move(prepared));
 }
 
+void Renderer::set_mesh(const Mesh& mesh, MeshBuffers::MeshLayout&& layout, FieldUpload&& prepared) {
+    mesh_.reset();
+    mesh_ = std::make_unique<MeshBuffers>(mesh, std::move(layout), std::move(prepared));
+}
+
 void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                              const std::vector<glm::vec3>& fine_normals) {
     if (mesh_) mesh_->update_fields(mesh, fields, feature_size, fine_normals);

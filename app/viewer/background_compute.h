@@ -11,6 +11,7 @@
 #include "geometry/surface_fields.h"
 #include "render/camera/camera.h"
 #include "render/fields/detail_fields.h"
+#include "render/fields/mesh_buffers.h"
 #include "render/fields/field_upload.h"
 
 #include <atomic>
@@ -84,11 +85,11 @@ public:
     struct ViewResult {
         std::shared_ptr<const Mesh> mesh;  // whose fields these are
         render::FieldUpload upload;
-        // A first view instead: its fields, triangles clustered and upload prepared whole
-        // (Renderer::set_mesh's second form), so that the window's thread only sends them.
+        // A first view instead: its fields, the buffers' layout and the upload prepared whole
+        // (Renderer::set_mesh's third form), so that the window's thread only sends them.
         struct First {
             render::DetailFields fields;
-            FaceClusters clusters;
+            render::MeshBuffers::MeshLayout layout;
             render::FieldUpload upload;
         };
         std::shared_ptr<First> first;

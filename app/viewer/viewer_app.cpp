@@ -215,8 +215,7 @@ void ViewerApp::request_first_view() {
 void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera,
                                 int height) {
     const auto t = std::chrono::steady_clock::now();
-    renderer_->set_mesh(first.fields.mesh, first.fields.fields.flags, std::move(first.clusters),
-                        std::move(first.upload));
+    renderer_->set_mesh(first.fields.mesh, std::move(first.layout), std::move(first.upload));
     renderer_->set_creases(model_->crease_points);
     face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
     upload_s_ = float(seconds_since(t));

@@ -48,47 +48,62 @@ FaceClusters MeshBuffers::face_clusters_of(const Mesh& mesh) { return cluster_fa
 MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                          const std::vector<glm::vec3>& fine_normals)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
-    build(mesh, fields.flags, face_clusters_of(mesh));
-    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
+    MeshLayout layout = layout_of(mesh, fields.flags, face_clusters_of(mesh));
+    FieldUpload prepared = prepare_field_upload(mesh, fields, feature_size, fine_normals, layout.clusters);
+    build(std::move(layout));
+    upload(std::move(prepared));
 }
 
 MeshBuffers::MeshBuffers(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters,
                          FieldUpload&& prepared)
+    : MeshBuffers(mesh, layout_of(mesh, flags, std::move(clusters)), std::move(prepared)) {}
+
+MeshBuffers::MeshBuffers(const Mesh& mesh, MeshLayout&& layout, FieldUpload&& prepared)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
-    build(mesh, flags, std::move(clusters));
+    build(std::move(layout));
     upload(std::move(prepared));
 }
 
-void MeshBuffers::build(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters) {
-    bounds_ = bounding_sphere(mesh);
-    back_faces_ = back_face_visibility(mesh);
-
-    make_vertex_buffers(vertex_buffer_, position_buffer_);
+MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags,
+                                               FaceClusters clusters) {
+    MeshLayout out;
+    out.bounds = bounding_sphere(mesh);
+    out.back_faces = back_face_visibility(mesh);
     // Triangles in cluster order, so the contour pass can draw runs of them,
     // and vertices in order of first use by those triangles, so a run's
     // vertices lie close together (for the GL's vertex fetch and the CPU
     // line pass alike).
-    face_clusters_ = std::move(clusters);
-    const std::vector<uint32_t>& new_id = face_clusters_.vertex_slot;
-    std::vector<Face> ordered(mesh.faces.size());
-    for (size_t i = 0; i < ordered.size(); ++i) {
-        const Face& f = mesh.faces[face_clusters_.face_order[i]];
-        ordered[i] = {new_id[f[0]], new_id[f[1]], new_id[f[2]]};
+    const std::vector<uint32_t>& new_id = clusters.vertex_slot;
+    out.faces.resize(mesh.faces.size());
+    for (size_t i = 0; i < out.faces.size(); ++i) {
+        const Face& f = mesh.faces[clusters.face_order[i]];
+        out.faces[i] = {new_id[f[0]], new_id[f[1]], new_id[f[2]]};
     }
+    out.boundary_edges = boundary_edges(mesh, flags);
+    for (glm::uvec2& e : out.boundary_edges) e = {new_id[e.x], new_id[e.y]};
+    out.clusters = std::move(clusters);
+    return out;
+}
+
+void MeshBuffers::build(MeshLayout&& layout) {
+    bounds_ = layout.bounds;
+    back_faces_ = std::move(layout.back_faces);
+    face_clusters_ = std::move(layout.clusters);
+    make_vertex_buffers(vertex_buffer_, position_buffer_);
     // The triangles with the whole records (vao_) and with the positions alone (position_vao_).
     glGenVertexArrays(1, &vao_);
     glGenVertexArrays(1, &position_vao_);
     glGenBuffers(1, &triangle_buffer_);
     glBindVertexArray(vao_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ordered.size() * sizeof(Face)), ordered.data(), GL_STATIC_DRAW);
-    cpu_mesh_.faces = std::move(ordered);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(layout.faces.size() * sizeof(Face)), layout.faces.data(),
+                 GL_STATIC_DRAW);
+    cpu_mesh_.faces = std::move(layout.faces);
     glBindVertexArray(position_vao_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
 
     // Boundary edges share the vertex buffer through a third VAO.
-    std::vector<glm::uvec2> edges = boundary_edges(mesh, flags);
-    for (glm::uvec2& e : edges) e = {new_id[e.x], new_id[e.y]};
+    std::vector<glm::uvec2>& edges = layout.boundary_edges;
     boundary_edges_ = edges.size();
     glGenVertexArrays(1, &edge_vao_);
     glBindVertexArray(edge_vao_);

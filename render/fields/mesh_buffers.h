@@ -30,6 +30,20 @@ public:
     // face_clusters_of and the fields' upload prepared with them. flags: the
     // fields' (open boundaries).
     MeshBuffers(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters, FieldUpload&& prepared);
+    // What building the buffers computes before any GL call, made on any thread (a viewer's
+    // worker, so that its window thread only sends): the bounding sphere, where back faces
+    // can be seen, the triangles in the clusters' order and the open boundary edges, both
+    // in the uploaded vertex order, and the clusters. flags: the fields' (open boundaries).
+    struct MeshLayout {
+        FaceClusters clusters;
+        std::vector<Face> faces;
+        std::vector<glm::uvec2> boundary_edges;
+        BoundingSphere bounds;
+        BackFaceVisibility back_faces;
+    };
+    static MeshLayout layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
+    // The same as the second constructor from layout_of's result.
+    MeshBuffers(const Mesh& mesh, MeshLayout&& layout, FieldUpload&& prepared);
     ~MeshBuffers();
     // The face clusters the triangles are uploaded in.
     static FaceClusters face_clusters_of(const Mesh& mesh);
@@ -121,7 +135,7 @@ public:
 
 private:
     // Everything but the fields: bounds, triangles in cluster order, boundary edges, the buffers.
-    void build(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
+    void build(MeshLayout&& layout);  // the GL half: buffers and vertex arrays
     // Makes the uploaded fields current: their CPU copy, bounds and version.
     void adopt(FieldUpload&& uploaded);
     // A buffer for the vertex records and one for the positions alone, of this mesh's size, unfilled.
