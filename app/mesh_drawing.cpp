@@ -113,8 +113,9 @@ bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera&
     }
     // The upload's CPU half in steps too; the first view's also orders the triangles (face clusters).
     if (!p->upload) {
-        if (!uploaded_) {
+        if (!uploaded_ && !p->clusters_made) {
             p->clusters = render::MeshBuffers::face_clusters_of(p->fields.mesh);
+            p->clusters_made = true;
             if (time_left() <= 0) return false;
         }
         p->upload = std::make_unique<render::FieldUploadSteps>(

@@ -129,6 +129,7 @@ private:
         std::unique_ptr<render::DetailFieldsJob> job;  // made once the raw fields it needs are there
         render::DetailFields fields;                   // the job's, once done
         FaceClusters clusters;                             // the first view's: the triangles' order
+        bool clusters_made = false;  // (one step: a slice that ran out of time after it must not make them again)
         std::unique_ptr<render::FieldUploadSteps> upload;  // their CPU half
     };
     std::unique_ptr<PendingView> pending_;
