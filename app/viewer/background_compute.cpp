@@ -160,10 +160,7 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
     render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *fields, scales);
     if (!r.clusters) {  // a first view: the buffers' layout made here too
         auto first = std::make_shared<ViewResult::First>();
-        first->layout =
-            render::MeshBuffers::layout_of(d.mesh, d.fields.flags, render::MeshBuffers::face_clusters_of(d.mesh));
-        first->upload =
-            render::prepare_field_upload(d.mesh, d.fields, d.feature_size, d.fine_normals, first->layout.clusters);
+        first->buffers = render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals);
         first->fields = std::move(d);
         out.first = std::move(first);
         return out;

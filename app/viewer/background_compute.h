@@ -85,12 +85,11 @@ public:
     struct ViewResult {
         std::shared_ptr<const Mesh> mesh;  // whose fields these are
         render::FieldUpload upload;
-        // A first view instead: its fields, the buffers' layout and the upload prepared whole
-        // (Renderer::set_mesh's third form), so that the window's thread only sends them.
+        // A first view instead: its fields and all that building their buffers computes before
+        // any GL call (MeshBuffers::prepare), so that the window's thread only sends them.
         struct First {
             render::DetailFields fields;
-            render::MeshBuffers::MeshLayout layout;
-            render::FieldUpload upload;
+            render::MeshBuffers::Prepared buffers;
         };
         std::shared_ptr<First> first;
         render::Camera camera;

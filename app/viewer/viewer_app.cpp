@@ -198,6 +198,12 @@ void ViewerApp::show_model() {
         complete_fields();
         renderer_->set_mesh(*model_->mesh, *model_->fields, model_->feature_size);
     }
+    mesh_uploaded(t);
+}
+
+// After Renderer::set_mesh (started at t): the model's creases, the clusters later views are
+// prepared in, the time the upload took.
+void ViewerApp::mesh_uploaded(std::chrono::steady_clock::time_point t) {
     renderer_->set_creases(model_->crease_points);
     face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
     upload_s_ = float(seconds_since(t));
@@ -215,10 +221,8 @@ void ViewerApp::request_first_view() {
 void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera,
                                 int height) {
     const auto t = std::chrono::steady_clock::now();
-    renderer_->set_mesh(first.fields.mesh, std::move(first.layout), std::move(first.upload));
-    renderer_->set_creases(model_->crease_points);
-    face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
-    upload_s_ = float(seconds_since(t));
+    renderer_->set_mesh(first.fields.mesh, std::move(first.buffers.layout), std::move(first.buffers.upload));
+    mesh_uploaded(t);
     shown_ = {shown_.detail, camera, height};
     first_view_pending_ = false;
     quick_frame_ = model_->mesh->face_count() >= kQuickFirstFrameFaces;

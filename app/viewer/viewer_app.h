@@ -60,6 +60,7 @@ private:
     void show_model();                // the adopted model drawn, its first view's fields made here
     void request_first_view();        // ... or made by the worker (big meshes)
     void show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera, int height);
+    void mesh_uploaded(std::chrono::steady_clock::time_point t);
     void request_view_fields();      // new detail fields when the view's scale changed
     void continue_field_upload(std::chrono::steady_clock::time_point since);
     bool view_fields_stale() const;  // the fields on the GPU are for another scale or direction of view

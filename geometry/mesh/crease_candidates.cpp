@@ -1,19 +1,16 @@
 #include "crease_candidates.h"
 
 #include <glm/geometric.hpp>
-#include <glm/vec2.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace kappa {
 
-namespace {
-
 // r packed in 16 bits: three signed 5-bit components, round(15 n / max |n_k|), under a set bit 15 (0 is
 // "none yet"). Any direction serves as r, so the rounding (under 3 degrees) costs only a little of the
 // half angle's slack, and the references take 2 bytes a vertex.
-uint16_t pack(glm::vec3 n) {
+uint16_t CreaseCandidates::pack_reference(glm::vec3 n) {
     const float scale = 15.0f / std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
     uint32_t packed = 1u << 15;
     for (int k = 0; k < 3; ++k) {
@@ -22,8 +19,6 @@ uint16_t pack(glm::vec3 n) {
     }
     return uint16_t(packed);
 }
-
-}  // namespace
 
 CreaseCandidates::CreaseCandidates(size_t vertex_count, float angle_deg)
     : vertex_count_(vertex_count), reference_(new std::atomic<uint16_t>[vertex_count]()) {
@@ -41,8 +36,6 @@ CreaseCandidates::CreaseCandidates(size_t vertex_count, float angle_deg)
     cos2_half_ = float(std::cos(half) * std::cos(half) + 1e-5);
     everywhere_ = everywhere_ || !(cos2_half_ < 1.0f);
 }
-
-uint16_t CreaseCandidates::pack_reference(glm::vec3 direction) { return pack(direction); }
 
 std::vector<uint32_t> CreaseCandidates::vertices() {
     std::vector<uint32_t> out;

@@ -45,13 +45,20 @@ void set_vertex_attributes() {
 
 FaceClusters MeshBuffers::face_clusters_of(const Mesh& mesh) { return cluster_faces(mesh, kClusterFaces); }
 
+MeshBuffers::Prepared MeshBuffers::prepare(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                                           const std::vector<glm::vec3>& fine_normals) {
+    Prepared p;
+    p.layout = layout_of(mesh, fields.flags, face_clusters_of(mesh));
+    p.upload = prepare_field_upload(mesh, fields, feature_size, fine_normals, p.layout.clusters);
+    return p;
+}
+
 MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                          const std::vector<glm::vec3>& fine_normals)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
-    MeshLayout layout = layout_of(mesh, fields.flags, face_clusters_of(mesh));
-    FieldUpload prepared = prepare_field_upload(mesh, fields, feature_size, fine_normals, layout.clusters);
-    build(std::move(layout));
-    upload(std::move(prepared));
+    Prepared p = prepare(mesh, fields, feature_size, fine_normals);
+    build(std::move(p.layout));
+    upload(std::move(p.upload));
 }
 
 MeshBuffers::MeshBuffers(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters,

@@ -44,6 +44,14 @@ public:
     static MeshLayout layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
     // The same as the second constructor from layout_of's result.
     MeshBuffers(const Mesh& mesh, MeshLayout&& layout, FieldUpload&& prepared);
+    // Everything the first constructor computes before any GL call: the layout, with the mesh's
+    // face_clusters_of, and the fields' upload prepared in its clusters' order (any thread).
+    struct Prepared {
+        MeshLayout layout;
+        FieldUpload upload;
+    };
+    static Prepared prepare(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
+                            const std::vector<glm::vec3>& fine_normals = {});
     ~MeshBuffers();
     // The face clusters the triangles are uploaded in.
     static FaceClusters face_clusters_of(const Mesh& mesh);
