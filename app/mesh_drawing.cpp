@@ -35,6 +35,7 @@ MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, con
     DrawingPreparation prepared = prepare_for_drawing(input, adjacency_, settings.crease_angle);
     units_ = prepared.units;
     turned_ = prepared.turned_inside_out;
+    outside_out_ = prepared.outside_out;
     crease_angle_ = prepared.creases.angle;
     // Sharp edges split the mesh: each side gets its own normals and curvature.
     drawn_ = split_at_creases(std::move(input), prepared.creases.creases, &adjacency_);
@@ -79,7 +80,7 @@ bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera&
     if (settings_.detail <= 0) {
         view_fields_ = &fields_;
         if (!uploaded_) {
-            renderer.set_mesh(mesh, fields_, fs_);
+            renderer.set_mesh(mesh, render::MeshBuffers::prepare(mesh, fields_, fs_, {}, mesh_facts()));
             renderer.set_creases(render::crease_end_points(drawn_));
             uploaded_ = true;
         }
@@ -111,22 +112,21 @@ bool MeshDrawing::work_on_view(render::Renderer& renderer, const render::Camera&
         p->fields = p->job->take();
         if (time_left() <= 0) return false;
     }
-    // The upload's CPU half in steps too; the first view's also orders the triangles (face clusters).
+    // The upload's CPU half in steps too; the first view's buffers' layout (the triangles' order) first.
     if (!p->upload) {
-        if (!uploaded_ && !p->clusters_made) {
-            p->clusters = render::MeshBuffers::face_clusters_of(p->fields.mesh);
-            p->clusters_made = true;
+        if (!uploaded_ && !p->layout) {
+            p->layout = render::MeshBuffers::layout_of(p->fields.mesh, p->fields.fields.flags, mesh_facts());
             if (time_left() <= 0) return false;
         }
         p->upload = std::make_unique<render::FieldUploadSteps>(
             p->fields.mesh, p->fields.fields, p->fields.feature_size, p->fields.fine_normals,
-            uploaded_ ? renderer.mesh()->face_clusters() : p->clusters, chunk);
+            uploaded_ ? renderer.mesh()->face_clusters() : p->layout->clusters, chunk);
     }
     if (!p->upload->done()) {
         if (!p->upload->run_for(time_left()) || time_left() <= 0) return false;
     }
     if (!uploaded_) {
-        renderer.set_mesh(p->fields.mesh, p->fields.fields.flags, std::move(p->clusters), p->upload->take());
+        renderer.set_mesh(p->fields.mesh, {std::move(*p->layout), p->upload->take()});
         renderer.set_creases(render::crease_end_points(drawn_));
         uploaded_ = true;
     } else {

@@ -93,6 +93,9 @@ public:
 
 private:
     SurfaceFields compute_fields();
+    // What the preparation found that building the GPU buffers would find again: the rows and
+    // the orientation (a view's detail fields move the positions alone, so they serve its mesh too).
+    render::MeshFacts mesh_facts() const { return {&adjacency_, outside_out_}; }
     // prepare_view's work for at most about `seconds`; chunk: DetailFieldsJob's.
     bool work_on_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size, double seconds,
                       size_t chunk);
@@ -101,6 +104,7 @@ private:
     SmoothingOptions smoothing_;  // as given (model units)
     DrawingUnits units_;
     bool turned_ = false;
+    bool outside_out_ = false;  // DrawingPreparation's
     ProgressFn progress_;
     float crease_angle_ = 0;
     SplitMesh drawn_;
@@ -128,8 +132,9 @@ private:
         render::ViewScales scales;
         std::unique_ptr<render::DetailFieldsJob> job;  // made once the raw fields it needs are there
         render::DetailFields fields;                   // the job's, once done
-        FaceClusters clusters;                             // the first view's: the triangles' order
-        bool clusters_made = false;  // (one step: a slice that ran out of time after it must not make them again)
+        // The first view's buffers' layout: the triangles' order (face clusters), the back faces
+        // (one step: a slice that ran out of time after it must not make it again).
+        std::optional<render::MeshBuffers::MeshLayout> layout;
         std::unique_ptr<render::FieldUploadSteps> upload;  // their CPU half
     };
     std::unique_ptr<PendingView> pending_;

@@ -22,6 +22,7 @@ DrawingPreparation prepare_for_drawing(Mesh& mesh, VertexFaces& vf, float crease
     p.turned_inside_out = is_inside_out(survey.volumes);
     // Turned round, every normal turns with the others: the bends, and so the candidates, stay.
     if (p.turned_inside_out) flip_faces(mesh, &vf);
+    p.outside_out = p.turned_inside_out || is_outside_out(survey.volumes);
     if (angle) p.creases = {*angle, creases_around(mesh, vf, *angle, survey.crease_candidates)};
     else p.creases = resolve_creases(mesh, vf, crease_setting);
     return p;

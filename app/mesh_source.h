@@ -26,6 +26,7 @@ Mesh load_mesh_or_default(const std::string& path);
 struct DrawingPreparation {
     DrawingUnits units;
     bool turned_inside_out = false;
+    bool outside_out = false;  // after the turn: the normals point clearly outside (back faces may be culled)
     ResolvedCreases creases;
 };
 DrawingPreparation prepare_for_drawing(Mesh& mesh, VertexFaces& vf, float crease_setting);

@@ -57,15 +57,9 @@ void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float fea
     mesh_ = std::make_unique<MeshBuffers>(mesh, fields, feature_size, fine_normals);
 }
 
-void Renderer::set_mesh(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters,
-                        FieldUpload&& prepared) {
+void Renderer::set_mesh(const Mesh& mesh, MeshBuffers::Prepared&& prepared) {
     mesh_.reset();
-    mesh_ = std::make_unique<MeshBuffers>(mesh, flags, std::move(clusters), std::move(prepared));
-}
-
-void Renderer::set_mesh(const Mesh& mesh, MeshBuffers::MeshLayout&& layout, FieldUpload&& prepared) {
-    mesh_.reset();
-    mesh_ = std::make_unique<MeshBuffers>(mesh, std::move(layout), std::move(prepared));
+    mesh_ = std::make_unique<MeshBuffers>(mesh, std::move(prepared));
 }
 
 void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,

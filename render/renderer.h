@@ -35,10 +35,8 @@ public:
     // fine_normals: see MeshBuffers::update_fields.
     void set_mesh(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                   const std::vector<glm::vec3>& fine_normals = {});
-    // The same with the upload prepared beforehand (MeshBuffers' second constructor).
-    void set_mesh(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters, FieldUpload&& prepared);
-    // ... and with MeshBuffers::layout_of's result made beforehand too: GL calls alone.
-    void set_mesh(const Mesh& mesh, MeshBuffers::MeshLayout&& layout, FieldUpload&& prepared);
+    // The same from what MeshBuffers::prepare made beforehand (any thread): GL calls alone.
+    void set_mesh(const Mesh& mesh, MeshBuffers::Prepared&& prepared);
     // New fields for the mesh already uploaded (same vertices and faces).
     void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                        const std::vector<glm::vec3>& fine_normals = {});

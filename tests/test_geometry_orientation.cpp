@@ -98,3 +98,48 @@ TEST_CASE("back faces: cullable surfaces and their holes", "[geometry][orientati
     CHECK(!back_face_visibility(make_grid(2.0f, 10)).cullable);
     CHECK(!back_face_visibility(Mesh{}).cullable);
 }
+
+TEST_CASE("back faces from the rows: the same answer, degenerate faces ignored", "[geometry][orientation]") {
+    // The rows and a known orientation give what the mesh alone gives.
+    Mesh open = make_icosphere(1.0f, 2);
+    open.faces.erase(open.faces.begin() + 200);
+    open.faces.erase(open.faces.begin());
+    const BackFaceVisibility alone = back_face_visibility(open);
+    const BackFaceVisibility given = back_face_visibility(open, build_vertex_faces(open), true);
+    CHECK(given.cullable == alone.cullable);
+    CHECK(given.holes == alone.holes);
+    // Holes in order of their smallest vertex, each with its vertices in increasing order.
+    REQUIRE(given.holes.size() == 2);
+    const Mesh whole = make_icosphere(1.0f, 2);
+    const Face a = whole.faces[0], b = whole.faces[200];
+    const uint32_t smallest = std::min({a[0], a[1], a[2], b[0], b[1], b[2]});
+    CHECK(given.holes[0][0] == open.positions[smallest]);
+    // Told the normals point inwards: not cullable, whatever the edges.
+    CHECK(!back_face_visibility(open, build_vertex_faces(open), false).cullable);
+    // A face that repeats a vertex has no edges (edge_table.h): it neither opens nor breaks an edge.
+    Mesh torus = make_torus(1.0f, 0.3f, 48, 24);
+    const Face f0 = torus.faces[0];
+    torus.faces.push_back({f0[0], f0[0], f0[1]});
+    torus.faces.push_back({f0[1], f0[0], f0[1]});
+    const BackFaceVisibility with_degenerate = back_face_visibility(torus);
+    CHECK(with_degenerate.cullable);
+    CHECK(with_degenerate.holes.empty());
+    // A vertex of huge degree (a fan of 100 faces closing a cone) is checked like any other.
+    Mesh cone;
+    cone.positions.push_back({0, 0, 1});
+    cone.positions.push_back({0, 0, -0.1f});
+    for (int i = 0; i < 100; ++i) {
+        const float a = 2 * 3.14159265f * i / 100;
+        cone.positions.push_back({std::cos(a), std::sin(a), 0});
+    }
+    for (uint32_t i = 0; i < 100; ++i) {
+        const uint32_t a = 2 + i, b = 2 + (i + 1) % 100;
+        cone.faces.push_back({0, a, b});
+        cone.faces.push_back({1, b, a});
+    }
+    CHECK(back_face_visibility(cone).cullable);
+    cone.faces.push_back({0, 2, 3});  // the edge 0-2 now used twice from 0 to 2
+    CHECK(!back_face_visibility(cone).cullable);
+    // Rows of another mesh are a caller's mistake, said at once.
+    CHECK_THROWS_AS(back_face_visibility(open, build_vertex_faces(torus), true), std::invalid_argument);
+}

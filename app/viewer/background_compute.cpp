@@ -101,6 +101,8 @@ void BackgroundCompute::recompute(const Model& model, const SmoothingOptions& sm
     r.smoothing = smoothing;
     r.crease_points = model.crease_points;
     r.input_vertices = model.input_vertices;
+    r.rows = model.rows;
+    r.outside_out = model.outside_out;
     submit(std::move(r));
 }
 
@@ -160,7 +162,8 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
     render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *fields, scales);
     if (!r.clusters) {  // a first view: the buffers' layout made here too
         auto first = std::make_shared<ViewResult::First>();
-        first->buffers = render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals);
+        first->buffers =
+            render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals, {r.rows.get(), r.outside_out});
         first->fields = std::move(d);
         out.first = std::move(first);
         return out;
@@ -235,15 +238,19 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             m.mesh = request.mesh;
             m.crease_points = request.crease_points;
             m.input_vertices = request.input_vertices;
+            m.rows = request.rows;
+            m.outside_out = request.outside_out;
         } else {
             set_stage("loading");
             const auto t = std::chrono::steady_clock::now();
             Mesh input = app::load_mesh_or_default(request.path);
-            VertexFaces vf = build_vertex_faces(input);
-            // The angle (auto or given) and the creases, as kappa render.
-            const app::DrawingPreparation prepared = app::prepare_for_drawing(input, vf, request.crease_angle);
+            auto rows = std::make_shared<VertexFaces>(build_vertex_faces(input));
+            // The angle (auto or given) and the creases, as kappa render (app/mesh_drawing.cpp).
+            const app::DrawingPreparation prepared = app::prepare_for_drawing(input, *rows, request.crease_angle);
             m.input_vertices = input.vertex_count();
-            SplitMesh split = split_at_creases(std::move(input), prepared.creases.creases);
+            SplitMesh split = split_at_creases(std::move(input), prepared.creases.creases, rows.get());
+            m.rows = std::move(rows);
+            m.outside_out = prepared.outside_out;
             m.crease_points = render::crease_end_points(split);
             m.mesh = std::make_shared<const Mesh>(std::move(split.mesh));
             m.load_s = seconds_since(t);
@@ -254,15 +261,15 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             set_stage(stage);
         };
         auto fields = std::make_shared<SurfaceFields>(
-            request.normals_first ? compute_surface_normals(*m.mesh, &m.stages)
-                                  : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report));
+            request.normals_first ? compute_surface_normals(*m.mesh, &m.stages, m.rows.get())
+                                  : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report, m.rows.get()));
         set_stage("feature size");
         if (fields->has_curvature()) m.feature_size = feature_size(*m.mesh, *fields);
         set_stage("default view");
         const DefaultView view = default_view(*m.mesh, file_up_axis(request.path));  // as kappa render's
         m.view_direction = view.eye, m.view_up = view.up;
         set_stage("scale space");
-        m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields));
+        m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields, m.rows.get()));
         m.fields_s = seconds_since(t);
         if (fields->has_curvature()) m.summary = summarize(*fields);
         m.fields = std::move(fields);

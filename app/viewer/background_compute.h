@@ -43,6 +43,11 @@ struct Model {
     glm::vec3 view_up{0, 1, 0};         // the up axis it stands on
     std::vector<glm::vec3> crease_points;  // the crease pass's data (render/fields/field_upload.h); `mesh` is split there
     size_t input_vertices = 0;             // before the split
+    // The split mesh's vertex-face rows, kept from the load for the fields, the scale space
+    // and the first view's buffers; whether its normals point clearly outside (after the turn
+    // of an inside-out mesh): render::MeshFacts.
+    std::shared_ptr<const VertexFaces> rows;
+    std::optional<bool> outside_out;  // unknown: found when the buffers are built
     SmoothingOptions smoothing;
     ModelSummary summary;
     StageTimes stages;
@@ -81,6 +86,9 @@ public:
         render::Camera camera;
         int height = 1;
         float detail_px = 0;
+        // The model's rows and orientation (a first view's buffers: render::MeshFacts).
+        std::shared_ptr<const VertexFaces> rows;
+        std::optional<bool> outside_out;
     };
     struct ViewResult {
         std::shared_ptr<const Mesh> mesh;  // whose fields these are
@@ -138,6 +146,8 @@ private:
         float crease_angle = -1.0f;
         std::vector<glm::vec3> crease_points;  // recompute: the model's, kept
         size_t input_vertices = 0;
+        std::shared_ptr<const VertexFaces> rows;  // recompute: the model's, kept
+        std::optional<bool> outside_out;
         unsigned generation = 0;
     };
     void submit(Request request);

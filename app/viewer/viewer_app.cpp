@@ -193,10 +193,13 @@ void ViewerApp::show_model() {
             render::view_scales(*model_->mesh, *model_->detail, shown_.camera, shown_.height, shown_.detail);
         if (render::needs_raw_curvature(*model_->detail, scales)) complete_fields();
         const render::DetailFields d = render::detail_fields(*model_->mesh, *model_->detail, *model_->fields, scales);
-        renderer_->set_mesh(d.mesh, d.fields, d.feature_size, d.fine_normals);
+        renderer_->set_mesh(d.mesh, render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals,
+                                                                  mesh_facts()));
     } else {
         complete_fields();
-        renderer_->set_mesh(*model_->mesh, *model_->fields, model_->feature_size);
+        renderer_->set_mesh(*model_->mesh,
+                            render::MeshBuffers::prepare(*model_->mesh, *model_->fields, model_->feature_size, {},
+                                                         mesh_facts()));
     }
     mesh_uploaded(t);
 }
@@ -213,7 +216,7 @@ void ViewerApp::request_first_view() {
     first_view_pending_ = true;
     shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
     compute_.request_view({model_->mesh, model_->fields, model_->detail, nullptr, shown_.camera, shown_.height,
-                           shown_.detail});
+                           shown_.detail, model_->rows, model_->outside_out});
 }
 
 // A big model's first view from the worker, its upload prepared there: sent whole, as
@@ -221,7 +224,7 @@ void ViewerApp::request_first_view() {
 void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera,
                                 int height) {
     const auto t = std::chrono::steady_clock::now();
-    renderer_->set_mesh(first.fields.mesh, std::move(first.buffers.layout), std::move(first.buffers.upload));
+    renderer_->set_mesh(first.fields.mesh, std::move(first.buffers));
     mesh_uploaded(t);
     shown_ = {shown_.detail, camera, height};
     first_view_pending_ = false;

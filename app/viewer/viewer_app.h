@@ -61,6 +61,8 @@ private:
     void request_first_view();        // ... or made by the worker (big meshes)
     void show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera, int height);
     void mesh_uploaded(std::chrono::steady_clock::time_point t);
+    // The model's rows and orientation, for building its buffers (render::MeshFacts).
+    render::MeshFacts mesh_facts() const { return {model_->rows.get(), model_->outside_out}; }
     void request_view_fields();      // new detail fields when the view's scale changed
     void continue_field_upload(std::chrono::steady_clock::time_point since);
     bool view_fields_stale() const;  // the fields on the GPU are for another scale or direction of view

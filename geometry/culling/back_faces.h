@@ -18,6 +18,7 @@
 #pragma once
 
 #include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 
 #include <glm/vec3.hpp>
 
@@ -31,5 +32,9 @@ struct BackFaceVisibility {
 };
 
 BackFaceVisibility back_face_visibility(const Mesh& mesh);
+// The same from the mesh's vertex-face rows (build_vertex_faces) and whether its normals point
+// clearly outside (is_outside_out, or known from an earlier pass over the faces): a pass over
+// the rows, the vertices in parallel.
+BackFaceVisibility back_face_visibility(const Mesh& mesh, const VertexFaces& vf, bool outside_out);
 
 }  // namespace kappa

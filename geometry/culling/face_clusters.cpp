@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace kappa {
 
@@ -29,7 +30,7 @@ void order_vertices_by_use(const Mesh& mesh, FaceClusters& out) {
 
 }  // namespace
 
-FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces) {
+FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces, const VertexFaces* rows) {
     constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
     const size_t nf = mesh.face_count();
     FaceClusters out;
@@ -42,7 +43,11 @@ FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces) {
     out.face_order.resize(nf);
     out.cluster_start.reserve(nf / max_faces + 2);
 
-    const VertexFaces vf = build_vertex_faces(mesh);
+    VertexFaces built;
+    if (!rows) built = build_vertex_faces(mesh), rows = &built;
+    if (rows->offsets.size() != mesh.vertex_count() + 1)
+        throw std::invalid_argument("cluster_faces: vertex-face rows of another mesh");
+    const VertexFaces& vf = *rows;
     std::vector<uint8_t> assigned(nf, 0);
     // Per vertex (side by side: they are wanted together): queued == c when it
     // is already in cluster c's queue (no reset per cluster); every face of its

@@ -39,10 +39,9 @@ bool is_inside_out(const EnclosedVolumes& v) { return v.unsigned_sum > 0 && v.si
 
 bool is_inside_out(const Mesh& mesh) { return is_inside_out(enclosed_volumes(mesh)); }
 
-bool is_outside_out(const Mesh& mesh) {
-    const EnclosedVolumes v = enclosed_volumes(mesh);
-    return v.unsigned_sum > 0 && v.signed_sum > 0.5 * v.unsigned_sum;
-}
+bool is_outside_out(const EnclosedVolumes& v) { return v.unsigned_sum > 0 && v.signed_sum > 0.5 * v.unsigned_sum; }
+
+bool is_outside_out(const Mesh& mesh) { return is_outside_out(enclosed_volumes(mesh)); }
 
 void flip_faces(Mesh& mesh, VertexFaces* vf) {
     for (Face& f : mesh.faces) std::swap(f[1], f[2]);

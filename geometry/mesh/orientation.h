@@ -45,6 +45,7 @@ bool is_inside_out(const EnclosedVolumes& volumes);
 bool is_inside_out(const Mesh& mesh);
 // The reverse test: normals clearly pointing outside (signed volume
 // positive and at least half the unsigned sum).
+bool is_outside_out(const EnclosedVolumes& volumes);
 bool is_outside_out(const Mesh& mesh);
 // Reverses every face's winding (normals turn round). With vf (the mesh's
 // vertex-face rows), they are made the turned mesh's, as build_vertex_faces

@@ -1,6 +1,7 @@
 #include "render/fields/mesh_buffers.h"
 
 #include "geometry/lines/line_extraction.h"
+#include "geometry/mesh/orientation.h"
 #include "geometry/mesh/surface_samples.h"
 #include "geometry/curvature/vertex_flags.h"
 #include "geometry/parallel/parallel.h"
@@ -43,49 +44,44 @@ void set_vertex_attributes() {
 
 }  // namespace
 
-FaceClusters MeshBuffers::face_clusters_of(const Mesh& mesh) { return cluster_faces(mesh, kClusterFaces); }
-
 MeshBuffers::Prepared MeshBuffers::prepare(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
-                                           const std::vector<glm::vec3>& fine_normals) {
+                                           const std::vector<glm::vec3>& fine_normals, const MeshFacts& known) {
     Prepared p;
-    p.layout = layout_of(mesh, fields.flags, face_clusters_of(mesh));
+    p.layout = layout_of(mesh, fields.flags, known);
     p.upload = prepare_field_upload(mesh, fields, feature_size, fine_normals, p.layout.clusters);
     return p;
 }
 
 MeshBuffers::MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                          const std::vector<glm::vec3>& fine_normals)
-    : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
-    Prepared p = prepare(mesh, fields, feature_size, fine_normals);
-    build(std::move(p.layout));
-    upload(std::move(p.upload));
-}
+    : MeshBuffers(mesh, prepare(mesh, fields, feature_size, fine_normals)) {}
 
-MeshBuffers::MeshBuffers(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters,
-                         FieldUpload&& prepared)
-    : MeshBuffers(mesh, layout_of(mesh, flags, std::move(clusters)), std::move(prepared)) {}
-
-MeshBuffers::MeshBuffers(const Mesh& mesh, MeshLayout&& layout, FieldUpload&& prepared)
+MeshBuffers::MeshBuffers(const Mesh& mesh, Prepared&& prepared)
     : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
-    build(std::move(layout));
-    upload(std::move(prepared));
+    build(std::move(prepared.layout));
+    upload(std::move(prepared.upload));
 }
 
 MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags,
-                                               FaceClusters clusters) {
+                                               const MeshFacts& known) {
+    // The clusters and the back faces both walk the vertex-face rows.
+    VertexFaces built;
+    const VertexFaces* rows = known.rows;
+    if (!rows) built = build_vertex_faces(mesh), rows = &built;
     MeshLayout out;
+    FaceClusters clusters = cluster_faces(mesh, kClusterFaces, rows);
     out.bounds = bounding_sphere(mesh);
-    out.back_faces = back_face_visibility(mesh);
+    out.back_faces = back_face_visibility(mesh, *rows, known.outside_out ? *known.outside_out : is_outside_out(mesh));
     // Triangles in cluster order, so the contour pass can draw runs of them,
     // and vertices in order of first use by those triangles, so a run's
     // vertices lie close together (for the GL's vertex fetch and the CPU
     // line pass alike).
     const std::vector<uint32_t>& new_id = clusters.vertex_slot;
     out.faces.resize(mesh.faces.size());
-    for (size_t i = 0; i < out.faces.size(); ++i) {
+    parallel_for(out.faces.size(), [&](size_t i) {
         const Face& f = mesh.faces[clusters.face_order[i]];
         out.faces[i] = {new_id[f[0]], new_id[f[1]], new_id[f[2]]};
-    }
+    });
     out.boundary_edges = boundary_edges(mesh, flags);
     for (glm::uvec2& e : out.boundary_edges) e = {new_id[e.x], new_id[e.y]};
     out.clusters = std::move(clusters);

@@ -7,6 +7,7 @@
 
 #include "geometry/culling/back_faces.h"
 #include "geometry/mesh/mesh.h"
+#include "geometry/mesh/vertex_faces.h"
 #include "geometry/surface_fields.h"
 #include "render/camera/camera.h"
 #include "render/lines/cluster_culling.h"
@@ -16,8 +17,18 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 
 namespace kappa::render {
+
+// What a caller may already know of a mesh, so that building its buffers need not find it
+// again (app/mesh_drawing.cpp keeps both from its preparation): its vertex-face rows
+// (build_vertex_faces) and whether its normals point clearly outside (is_outside_out,
+// geometry/mesh/orientation.h). Unknown: found by MeshBuffers::layout_of.
+struct MeshFacts {
+    const VertexFaces* rows = nullptr;
+    std::optional<bool> outside_out;
+};
 
 class MeshBuffers {
 public:
@@ -25,15 +36,11 @@ public:
     // vertex. feature_size: the mesh's feature size fs (geometry/curvature/feature_size.h).
     MeshBuffers(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                 const std::vector<glm::vec3>& fine_normals = {});
-    // The same from what the first constructor computes, made beforehand (a page
-    // with one thread prepares it in steps, app/mesh_drawing.h): the mesh's
-    // face_clusters_of and the fields' upload prepared with them. flags: the
-    // fields' (open boundaries).
-    MeshBuffers(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters, FieldUpload&& prepared);
     // What building the buffers computes before any GL call, made on any thread (a viewer's
-    // worker, so that its window thread only sends): the bounding sphere, where back faces
-    // can be seen, the triangles in the clusters' order and the open boundary edges, both
-    // in the uploaded vertex order, and the clusters. flags: the fields' (open boundaries).
+    // worker, so that its window thread only sends; a page with one thread, as a step of its
+    // own): the face clusters, the bounding sphere, where back faces can be seen, the
+    // triangles in the clusters' order and the open boundary edges, both in the uploaded
+    // vertex order. flags: the fields' (open boundaries).
     struct MeshLayout {
         FaceClusters clusters;
         std::vector<Face> faces;
@@ -41,20 +48,18 @@ public:
         BoundingSphere bounds;
         BackFaceVisibility back_faces;
     };
-    static MeshLayout layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags, FaceClusters clusters);
-    // The same as the second constructor from layout_of's result.
-    MeshBuffers(const Mesh& mesh, MeshLayout&& layout, FieldUpload&& prepared);
-    // Everything the first constructor computes before any GL call: the layout, with the mesh's
-    // face_clusters_of, and the fields' upload prepared in its clusters' order (any thread).
+    static MeshLayout layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags, const MeshFacts& known = {});
+    // Everything the first constructor computes before any GL call: the layout and the
+    // fields' upload prepared in its clusters' order (prepare_field_upload; any thread).
     struct Prepared {
         MeshLayout layout;
         FieldUpload upload;
     };
     static Prepared prepare(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
-                            const std::vector<glm::vec3>& fine_normals = {});
+                            const std::vector<glm::vec3>& fine_normals = {}, const MeshFacts& known = {});
+    // The same as the first constructor from what was prepared beforehand: GL calls alone.
+    MeshBuffers(const Mesh& mesh, Prepared&& prepared);
     ~MeshBuffers();
-    // The face clusters the triangles are uploaded in.
-    static FaceClusters face_clusters_of(const Mesh& mesh);
     // Replaces the fields (same mesh): vertex attributes, culling bounds,
     // colour-map ranges and hatching seeds. For fields at a new scale.
     // fine_normals: normals at pixel scale, for occluding contours (zeros
