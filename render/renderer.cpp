@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <iterator>
+#include <limits>
 #include <string>
 
 namespace kappa::render {
@@ -60,6 +61,12 @@ void Renderer::set_mesh(const Mesh& mesh, const SurfaceFields& fields, float fea
 void Renderer::set_mesh(const Mesh& mesh, MeshBuffers::Prepared&& prepared) {
     mesh_.reset();
     mesh_ = std::make_unique<MeshBuffers>(mesh, std::move(prepared));
+}
+
+void Renderer::set_mesh(std::unique_ptr<MeshBuffers> buffers) {
+    mesh_.reset();
+    mesh_ = std::move(buffers);
+    if (mesh_) mesh_->upload_step(std::numeric_limits<size_t>::max());  // whatever is left of a landing
 }
 
 void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,

@@ -37,6 +37,8 @@ public:
                   const std::vector<glm::vec3>& fine_normals = {});
     // The same from what MeshBuffers::prepare made beforehand (any thread): GL calls alone.
     void set_mesh(const Mesh& mesh, MeshBuffers::Prepared&& prepared);
+    // ... or buffers already made and filled (a first view sent in slices: MeshBuffers::InSlices).
+    void set_mesh(std::unique_ptr<MeshBuffers> buffers);
     // New fields for the mesh already uploaded (same vertices and faces).
     void update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
                        const std::vector<glm::vec3>& fine_normals = {});

@@ -85,3 +85,59 @@ TEST_CASE("fields uploaded in slices are drawn whole, and only after the last sl
     CHECK(renderer.continue_field_upload(total));
     CHECK(picture() == other_picture);
 }
+
+// A big mesh's first view in the viewer (MeshBuffers::InSlices): the triangles, records and
+// positions go into new buffers a slice a call, while the renderer draws the mesh it has; once
+// the last slice is sent the buffers draw exactly what buffers made in one go draw.
+TEST_CASE("a first view sent in slices draws what one upload draws", "[render][upload]") {
+    const Mesh mesh = make_default_model();
+    const SurfaceFields fields = compute_surface_fields(mesh);
+    const float fs = feature_size(mesh, fields);
+    SurfaceFields other = fields;  // other fields for the same mesh: twice the curvature
+    for (size_t v = 0; v < other.k1.size(); ++v) other.k1[v] *= 2.0f, other.k2[v] *= 2.0f;
+    const render::BoundingSphere bounds = render::bounding_sphere(mesh);
+    const auto camera = render::Camera::look_at(bounds.center + glm::vec3(0, 0, 3.5f * bounds.radius),
+                                                bounds.center, {0, 1, 0}, 30.0f);
+    render::RenderSettings settings;
+    settings.shading = render::Shading::None;  // lines alone: the curvature shows
+    render::Renderer& renderer = test::renderer();
+    auto picture = [&] { return render::render_to_image(renderer, camera, settings, 240, 200).pixels; };
+    renderer.set_mesh(mesh, other, fs);
+    const auto other_picture = picture();
+    renderer.set_mesh(mesh, fields, fs);
+    const auto whole_picture = picture();
+    REQUIRE(other_picture != whole_picture);
+
+    renderer.set_mesh(mesh, other, fs);  // what the window shows meanwhile
+    auto landing = std::make_unique<render::MeshBuffers>(mesh, render::MeshBuffers::prepare(mesh, fields, fs),
+                                                         render::MeshBuffers::InSlices{});
+    const size_t total = mesh.face_count() * sizeof(Face) +
+                         mesh.vertex_count() * (sizeof(render::GpuVertex) + sizeof(glm::vec3));
+    const size_t slice = total / 7 + 1;  // seven slices
+    int calls = 0;
+    float progress = 0;
+    while (true) {
+        CHECK(landing->upload_pending());
+        const bool done = landing->upload_step(slice);
+        ++calls;
+        if (done) break;
+        CHECK(landing->upload_progress() > progress);
+        progress = landing->upload_progress();
+        CHECK(progress < 1.0f);
+        CHECK(picture() == other_picture);  // the landing leaves the drawn mesh alone
+        REQUIRE(calls < 10);
+    }
+    CHECK(calls == 7);
+    CHECK(landing->upload_progress() == 1.0f);
+    renderer.set_mesh(std::move(landing));
+    CHECK(picture() == whole_picture);
+
+    // New fields for a landing not yet done send what is left of it first.
+    landing = std::make_unique<render::MeshBuffers>(mesh, render::MeshBuffers::prepare(mesh, fields, fs),
+                                                    render::MeshBuffers::InSlices{});
+    CHECK_FALSE(landing->upload_step(slice));
+    landing->upload(render::prepare_field_upload(mesh, other, fs, {}, landing->face_clusters()));
+    CHECK_FALSE(landing->upload_pending());
+    renderer.set_mesh(std::move(landing));
+    CHECK(picture() == other_picture);
+}

@@ -136,6 +136,9 @@ public:
     // Called after each drawn frame: a completion starts only after the
     // frame that shows its model, so it does not slow that frame down.
     void frame_drawn();
+    // Called when a first view (ViewResult::first) is on the GPU, or will not be: the
+    // completion waits for it.
+    void first_view_shown();
 
 private:
     struct Request {
@@ -166,6 +169,7 @@ private:
     std::atomic<bool> busy_{false};
     std::optional<Completion> done_completion_;
     bool frame_since_result_ = true;  // guarded by mutex_
+    bool first_view_out_ = false;     // a first view is with the window, not yet shown; guarded by mutex_
     std::optional<ViewRequest> pending_view_;
     std::optional<ViewResult> done_view_;
     std::atomic<bool> view_busy_{false};

@@ -126,7 +126,7 @@ int ViewerApp::run() {
 void ViewerApp::wait_for_events() {
     if (drag_button_ >= 0) {
         glfwPollEvents();  // orbiting: as many frames as the machine draws
-    } else if (renderer_->field_upload_pending()) {
+    } else if (renderer_->field_upload_pending() || landing_) {
         glfwPollEvents();  // new fields on their way to the GPU, a slice a frame
     } else if (compute_.busy() || first_view_pending_ || renderer_->hatching_pending()) {
         glfwWaitEventsTimeout(0.05);  // the progress bar moves; the computation gets the cores
@@ -176,6 +176,7 @@ void ViewerApp::adopt_results() {
     // too: the frames until they come show the progress (and the drawing
     // before, if any).
     first_view_pending_ = false;
+    landing_.reset();
     if (effective_detail() > 0 && model_->mesh->face_count() >= kFirstViewOnWorkerFaces) request_first_view();
     else show_model();
 }
@@ -201,15 +202,15 @@ void ViewerApp::show_model() {
                             render::MeshBuffers::prepare(*model_->mesh, *model_->fields, model_->feature_size, {},
                                                          mesh_facts()));
     }
-    mesh_uploaded(t);
+    mesh_uploaded(float(seconds_since(t)));
 }
 
-// After Renderer::set_mesh (started at t): the model's creases, the clusters later views are
-// prepared in, the time the upload took.
-void ViewerApp::mesh_uploaded(std::chrono::steady_clock::time_point t) {
+// After Renderer::set_mesh: the model's creases, the clusters later views are prepared in, the
+// window thread's time the upload took.
+void ViewerApp::mesh_uploaded(float window_s) {
     renderer_->set_creases(model_->crease_points);
     face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
-    upload_s_ = float(seconds_since(t));
+    upload_s_ = window_s;
 }
 
 void ViewerApp::request_first_view() {
@@ -219,17 +220,41 @@ void ViewerApp::request_first_view() {
                            shown_.detail, model_->rows, model_->outside_out});
 }
 
-// A big model's first view from the worker, its upload prepared there: sent whole, as
-// adopt_results sends the others'.
+// A big model's first view from the worker, its upload prepared there: sent in slices over the
+// next frames, as later views' fields are (17.8M faces: 1.1 GB, 7.6 s of GL calls on llvmpipe
+// sent whole), while the frames go on showing the progress (and the drawing before, if any).
 void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera,
                                 int height) {
     const auto t = std::chrono::steady_clock::now();
-    renderer_->set_mesh(first.fields.mesh, std::move(first.buffers));
-    mesh_uploaded(t);
-    shown_ = {shown_.detail, camera, height};
-    first_view_pending_ = false;
-    quick_frame_ = model_->mesh->face_count() >= kQuickFirstFrameFaces;
+    landing_ = std::make_unique<render::MeshBuffers>(first.fields.mesh, std::move(first.buffers),
+                                                     render::MeshBuffers::InSlices{});
+    landing_view_ = {shown_.detail, camera, height};
+    upload_s_ = 0;
+    landing_slices_ = landing_frames_ = 0;
+    continue_first_landing(t);  // this frame's share: the empty buffers made, then slices
+}
+
+// A frame's share of the first view's slices, budgeted as continue_field_upload's; the frame after
+// the last one draws it.
+void ViewerApp::continue_first_landing(std::chrono::steady_clock::time_point since) {
+    const double budget_s = std::max(0.004, 0.25e-3 * double(median(frame_ms_)));
+    bool done = false;
+    do {
+        done = landing_->upload_step(size_t(8) << 20);
+        ++landing_slices_;
+    } while (!done && seconds_since(since) < budget_s);
+    const float share = float(seconds_since(since));
+    landing_ms_.push_back(1e3f * share);
+    upload_s_ += share;
     redraw_frames_ = 2;
+    if (!done) return;
+    const auto t = std::chrono::steady_clock::now();
+    renderer_->set_mesh(std::move(landing_));
+    mesh_uploaded(upload_s_ + float(seconds_since(t)));
+    shown_ = landing_view_;
+    first_view_pending_ = false;
+    compute_.first_view_shown();
+    quick_frame_ = model_->mesh->face_count() >= kQuickFirstFrameFaces;
 }
 
 float ViewerApp::effective_detail() const {
@@ -244,14 +269,17 @@ float ViewerApp::effective_detail() const {
 // height or detail setting, the worker prepares new ones (never while
 // dragging: the frame after the release asks).
 void ViewerApp::request_view_fields() {
-    if (first_view_pending_) {
+    if (first_view_pending_ && landing_) {
+        continue_first_landing(std::chrono::steady_clock::now());
+        if (first_view_pending_) return;
+    } else if (first_view_pending_) {
         if (auto done = compute_.take_view(); done && done->first) {
             if (done->mesh == model_->mesh && done->detail_px == effective_detail())
                 show_first_view(*done->first, done->camera, done->height);
             else if (effective_detail() > 0)
                 request_first_view();  // the settings changed meanwhile: again with the new ones
             else
-                first_view_pending_ = false, show_model();  // detail off: the model's own fields
+                first_view_pending_ = false, compute_.first_view_shown(), show_model();  // detail off: the model's own fields
         }
         if (first_view_pending_) return;
     }
@@ -351,8 +379,9 @@ void ViewerApp::draw_frame() {
     info.upload_s = upload_s_;
     info.first_frame_s = first_frame_s_;
     info.computing = compute_.busy() || first_view_pending_;
-    info.progress = compute_.busy() ? compute_.progress() : -1.0f;  // a first view's fields: no fraction known
-    info.stage = compute_.busy() ? compute_.stage() : "detail fields for the view";
+    // A first view's fields: no fraction known; then its slices to the GPU.
+    info.progress = compute_.busy() ? compute_.progress() : landing_ ? landing_->upload_progress() : -1.0f;
+    info.stage = compute_.busy() ? compute_.stage() : landing_ ? "sending the view to the GPU" : "detail fields for the view";
     info.frame_ms = median(frame_ms_);
     info.gl = window_->description();
     const float scale = window_->content_scale();
@@ -368,7 +397,7 @@ void ViewerApp::draw_frame() {
         save_screenshot(pending_screenshot_->value, pending_screenshot_->flag);
         pending_screenshot_.reset();
     }
-    if (model_ && first_view_pending_) ++frames_before_first_view_;
+    if (model_ && first_view_pending_) ++(landing_ ? landing_frames_ : frames_before_first_view_);
     if (model_ && !first_view_pending_ && !first_frame_drawn_) {
         glFinish();
         first_frame_drawn_ = true;
@@ -378,7 +407,9 @@ void ViewerApp::draw_frame() {
                     model_->path.empty() ? "built-in model" : model_->path.c_str(), model_->mesh->vertex_count(),
                     model_->mesh->face_count(), first_frame_s_, model_->load_s, model_->fields_s, upload_s_);
         if (frames_before_first_view_ > 0)
-            std::printf("; %zu frames drawn while the worker made its fields", frames_before_first_view_);
+            std::printf("; %zu frames drawn while the worker made its fields, %zu while it was sent to the GPU "
+                        "in %zu slices",
+                        frames_before_first_view_, landing_frames_, landing_slices_);
         std::printf("\n");
         std::fflush(stdout);
     }

@@ -60,7 +60,9 @@ private:
     void show_model();                // the adopted model drawn, its first view's fields made here
     void request_first_view();        // ... or made by the worker (big meshes)
     void show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera, int height);
-    void mesh_uploaded(std::chrono::steady_clock::time_point t);
+    void mesh_uploaded(float window_s);
+    // A big model's first view, sent a slice at a time (the frame's share timed from `since`).
+    void continue_first_landing(std::chrono::steady_clock::time_point since);
     // The model's rows and orientation, for building its buffers (render::MeshFacts).
     render::MeshFacts mesh_facts() const { return {model_->rows.get(), model_->outside_out}; }
     void request_view_fields();      // new detail fields when the view's scale changed
@@ -125,6 +127,11 @@ private:
     bool first_frame_drawn_ = false;
     bool first_view_pending_ = false;  // a big model's first view fields are on their way from the worker
     size_t frames_before_first_view_ = 0;  // drawn meanwhile (the first model's)
+    // A big model's first view on its way to the GPU (MeshBuffers::InSlices), for the view
+    // it was made for; the renderer gets it once the last slice is sent.
+    std::unique_ptr<render::MeshBuffers> landing_;
+    ShownFields landing_view_;
+    size_t landing_slices_ = 0, landing_frames_ = 0;  // the first model's, reported with the first frame
 
     // Scripted runs.
     size_t step_ = 0;

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -62,6 +63,15 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, Prepared&& prepared)
     upload(std::move(prepared.upload));
 }
 
+MeshBuffers::MeshBuffers(const Mesh& mesh, Prepared&& prepared, InSlices)
+    : vertex_count_(mesh.vertex_count()), face_count_(mesh.face_count()) {
+    check_upload(prepared.upload);
+    build(std::move(prepared.layout), false);
+    pending_ = std::make_unique<PendingUpload>();
+    pending_->fields = std::move(prepared.upload);
+    pending_->first_landing = true;
+}
+
 MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags,
                                                const MeshFacts& known) {
     // The clusters and the back faces both walk the vertex-face rows.
@@ -88,7 +98,7 @@ MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vect
     return out;
 }
 
-void MeshBuffers::build(MeshLayout&& layout) {
+void MeshBuffers::build(MeshLayout&& layout, bool send_triangles) {
     bounds_ = layout.bounds;
     back_faces_ = std::move(layout.back_faces);
     face_clusters_ = std::move(layout.clusters);
@@ -99,8 +109,8 @@ void MeshBuffers::build(MeshLayout&& layout) {
     glGenBuffers(1, &triangle_buffer_);
     glBindVertexArray(vao_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(layout.faces.size() * sizeof(Face)), layout.faces.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(layout.faces.size() * sizeof(Face)),
+                 send_triangles ? layout.faces.data() : nullptr, GL_STATIC_DRAW);
     cpu_mesh_.faces = std::move(layout.faces);
     glBindVertexArray(position_vao_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
@@ -186,35 +196,66 @@ void MeshBuffers::check_upload(const FieldUpload& u) const {
         throw std::invalid_argument("MeshBuffers: upload for a different mesh");
 }
 
+std::vector<MeshBuffers::UploadPart> MeshBuffers::pending_parts() const {
+    std::vector<UploadPart> parts;
+    if (!pending_) return parts;
+    const PendingUpload& p = *pending_;
+    if (p.first_landing)
+        parts.push_back({GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_, vao_,
+                         reinterpret_cast<const char*>(cpu_mesh_.faces.data()), face_count_ * sizeof(Face)});
+    parts.push_back({GL_ARRAY_BUFFER, p.first_landing ? vertex_buffer_ : spare_vertex_buffer_, 0,
+                     reinterpret_cast<const char*>(p.fields.vertices.data()), vertex_count_ * sizeof(GpuVertex)});
+    parts.push_back({GL_ARRAY_BUFFER, p.first_landing ? position_buffer_ : spare_position_buffer_, 0,
+                     reinterpret_cast<const char*>(p.fields.copy.positions.data()), vertex_count_ * sizeof(glm::vec3)});
+    return parts;
+}
+
+float MeshBuffers::upload_progress() const {
+    if (!pending_) return 1;
+    size_t total = 0;
+    for (const UploadPart& part : pending_parts()) total += part.size;
+    return total ? float(double(pending_->bytes_sent) / double(total)) : 1.0f;
+}
+
 bool MeshBuffers::upload_step(size_t bytes) {
     if (!pending_) return true;
     PendingUpload& p = *pending_;
-    const size_t record_bytes = vertex_count_ * sizeof(GpuVertex);
-    const size_t total = record_bytes + vertex_count_ * sizeof(glm::vec3);
     size_t budget = std::max<size_t>(bytes, 1);
-    while (budget > 0 && p.bytes_sent < total) {
-        const bool records = p.bytes_sent < record_bytes;
-        const size_t at = records ? p.bytes_sent : p.bytes_sent - record_bytes;
-        const size_t size = std::min(budget, (records ? record_bytes : total - record_bytes) - at);
-        const char* from = records ? reinterpret_cast<const char*>(p.fields.vertices.data())
-                                   : reinterpret_cast<const char*>(p.fields.copy.positions.data());
-        glBindBuffer(GL_ARRAY_BUFFER, records ? spare_vertex_buffer_ : spare_position_buffer_);
-        glBufferSubData(GL_ARRAY_BUFFER, GLintptr(at), GLsizeiptr(size), from + at);
-        p.bytes_sent += size, budget -= size;
+    size_t part_start = 0;  // the part's first byte in the whole upload
+    for (const UploadPart& part : pending_parts()) {
+        const size_t part_end = part_start + part.size;
+        if (budget > 0 && p.bytes_sent < part_end) {
+            const size_t at = p.bytes_sent - part_start, size = std::min(budget, part.size - at);
+            if (part.vertex_array) glBindVertexArray(part.vertex_array);  // an element buffer is its state
+            glBindBuffer(part.target, part.buffer);
+            glBufferSubData(part.target, GLintptr(at), GLsizeiptr(size), part.data + at);
+            if (part.vertex_array) glBindVertexArray(0);
+            p.bytes_sent += size, budget -= size;
+        }
+        part_start = part_end;
     }
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    if (p.bytes_sent < total) return false;
-    // The last slice is sent: the spare buffers become the drawn ones, and the drawn ones spare.
-    std::swap(vertex_buffer_, spare_vertex_buffer_);
-    std::swap(position_buffer_, spare_position_buffer_);
-    bind_vertex_arrays();
+    if (p.bytes_sent < part_start) return false;
+    // The last slice is sent. New fields: the spare buffers become the drawn ones, and the drawn ones spare.
+    if (!p.first_landing) {
+        std::swap(vertex_buffer_, spare_vertex_buffer_);
+        std::swap(position_buffer_, spare_position_buffer_);
+        bind_vertex_arrays();
+    }
     FieldUpload done = std::move(p.fields);
     pending_.reset();
     adopt(std::move(done));
     return true;
 }
 
-void MeshBuffers::drop_pending() { pending_.reset(); }  // its buffers stay spare
+// A pending first landing is finished (the triangles go with it); new fields are dropped
+// (their buffers stay spare).
+void MeshBuffers::drop_pending() {
+    if (pending_ && pending_->first_landing)
+        while (!upload_step(std::numeric_limits<size_t>::max())) {
+        }
+    pending_.reset();
+}
 
 float MeshBuffers::map_range(ColorMap map) const {
     const size_t m = size_t(map);

@@ -59,6 +59,14 @@ public:
                             const std::vector<glm::vec3>& fine_normals = {}, const MeshFacts& known = {});
     // The same as the first constructor from what was prepared beforehand: GL calls alone.
     MeshBuffers(const Mesh& mesh, Prepared&& prepared);
+    // The same sent in slices, for a viewer whose frames must not wait for a big mesh's first
+    // view (a 17.8M-face mesh: 213 MB of triangles, 890 MB of vertex records and positions):
+    // the buffers are made empty, then upload_step sends the triangles, the records and the
+    // positions into them, at most `bytes` a call. Nothing may be drawn from these buffers
+    // until upload_step returns true (the viewer keeps them aside until then); a begin_upload,
+    // upload or update_fields first sends what is left.
+    struct InSlices {};
+    MeshBuffers(const Mesh& mesh, Prepared&& prepared, InSlices);
     ~MeshBuffers();
     // Replaces the fields (same mesh): vertex attributes, culling bounds,
     // colour-map ranges and hatching seeds. For fields at a new scale.
@@ -80,6 +88,7 @@ public:
     void begin_upload(FieldUpload&& prepared);
     bool upload_step(size_t bytes);  // true when nothing is pending any more
     bool upload_pending() const { return pending_ != nullptr; }
+    float upload_progress() const;   // of the pending upload: the fraction of its bytes sent (1: none pending)
     const FaceClusters& face_clusters() const { return face_clusters_; }
     // A CPU copy of what the shaders read, for lines made on the CPU (strokes,
     // the CPU isoline pass): the positions and faces in the uploaded order
@@ -148,7 +157,8 @@ public:
 
 private:
     // Everything but the fields: bounds, triangles in cluster order, boundary edges, the buffers.
-    void build(MeshLayout&& layout);  // the GL half: buffers and vertex arrays
+    // The GL half: buffers and vertex arrays, the triangles sent unless they are to go in slices.
+    void build(MeshLayout&& layout, bool send_triangles = true);
     // Makes the uploaded fields current: their CPU copy, bounds and version.
     void adopt(FieldUpload&& uploaded);
     // A buffer for the vertex records and one for the positions alone, of this mesh's size, unfilled.
@@ -160,8 +170,19 @@ private:
     void drop_pending();
     struct PendingUpload {
         FieldUpload fields;
-        size_t bytes_sent = 0;  // the records first, then the positions, into the spare buffers
+        // New fields go into the spare buffers, then swap with the drawn ones; a first landing
+        // (InSlices) sends the triangles, then the fields, into the drawn buffers themselves.
+        bool first_landing = false;
+        size_t bytes_sent = 0;  // of the parts in order
     };
+    // A stretch of the pending upload: its bytes and the buffer they go to.
+    struct UploadPart {
+        GLenum target;
+        GLuint buffer, vertex_array;  // vertex_array: the one to bind for an element buffer, else 0
+        const char* data;
+        size_t size;
+    };
+    std::vector<UploadPart> pending_parts() const;
     std::unique_ptr<PendingUpload> pending_;
     GLuint spare_vertex_buffer_ = 0, spare_position_buffer_ = 0;  // made by the first begin_upload
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
