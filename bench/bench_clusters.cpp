@@ -1,12 +1,16 @@
 // Face clusters and their culling bounds (geometry/culling/face_clusters.h,
 // geometry/culling/cluster_bounds.h): the once-per-mesh cost of cluster_faces and
 // compute_cluster_bounds (single-threaded), the per-frame cost of classifying
-// every cluster, and how many clusters / faces the default camera culls.
+// every cluster, and how many clusters / faces the default camera culls. Beside
+// them, the rest of the buffers' once-per-mesh layout that walks the vertex-face
+// rows (render/fields/mesh_buffers.h): where back faces can be seen
+// (geometry/culling/back_faces.h), with the rows and orientation given as a drawing has them.
 // Prints every run and the median.
 //
 //   bench_clusters [MESH] [RUNS] [MAX_FACES]   (default: ../shared/meshes/bunny-1M.ply next to the repo, 11 runs, 256)
 #include "time_it.h"
 
+#include "geometry/culling/back_faces.h"
 #include "geometry/culling/cluster_bounds.h"
 #include "geometry/culling/face_clusters.h"
 #include "geometry/curvature/face_geometry.h"
@@ -41,6 +45,9 @@ int main(int argc, char** argv) {
     const kappa::FaceClusters clusters = kappa::cluster_faces(mesh, max_faces);
     const std::vector<kappa::ClusterBounds> bounds = kappa::compute_cluster_bounds(mesh, normals, clusters);
     time_it("cluster_faces", runs, [&] { kappa::cluster_faces(mesh, max_faces); });
+    const kappa::VertexFaces rows = kappa::build_vertex_faces(mesh);
+    time_it("cluster_faces (rows given)", runs, [&] { kappa::cluster_faces(mesh, max_faces, &rows); });
+    time_it("back_face_visibility (rows, orientation given)", runs, [&] { kappa::back_face_visibility(mesh, rows, true); });
     time_it("compute_cluster_bounds", runs, [&] { kappa::compute_cluster_bounds(mesh, normals, clusters); });
     time_it("both", runs, [&] { kappa::compute_cluster_bounds(mesh, normals, kappa::cluster_faces(mesh, max_faces)); });
 

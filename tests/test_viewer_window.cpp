@@ -7,6 +7,7 @@
 
 #include "test_support.h"
 
+#include "render/fields/field_upload.h"
 #include "render/image/image.h"
 #include "render/image/png_writer.h"
 
@@ -202,8 +203,8 @@ TEST_CASE("a view saved as .xf renders the same with kappa render --xf", "[viewe
 // A big mesh's first view (1M faces and more) gets its detail fields from
 // the worker, as later views do: made on the window's thread they froze it
 // (about a second for bunny-1M here, 20 s for 17.8M faces). The window goes on
-// drawing frames meanwhile (with the progress bar), and then draws what
-// kappa render draws for the same view.
+// drawing frames meanwhile (with the progress bar), sends the view to the GPU
+// in 8 MiB slices, and then draws what kappa render draws for the same view.
 TEST_CASE("a big mesh's first view is made on the worker while the window draws, then is kappa render's",
           "[viewer][window][xf]") {
     const std::string dir = test::temp_dir();
@@ -221,6 +222,17 @@ TEST_CASE("a big mesh's first view is made on the worker while the window draws,
     REQUIRE(while_made != std::string::npos);
     const size_t number = r.output.rfind("; ", while_made) + 2;
     CHECK(std::atoi(r.output.c_str() + number) >= 1);
+    // "PATH: V vertices, F faces; ... , M while it was sent to the GPU in S slices": S is the
+    // triangles, vertex records and positions in 8 MiB slices.
+    const size_t counts = r.output.find("bunny-1M.ply: ");
+    REQUIRE(counts != std::string::npos);
+    const size_t vertices = std::strtoull(r.output.c_str() + counts + 14, nullptr, 10);
+    const size_t faces = std::strtoull(r.output.c_str() + r.output.find(" vertices, ", counts) + 11, nullptr, 10);
+    const size_t sent = r.output.find(" while it was sent to the GPU in ");
+    REQUIRE(sent != std::string::npos);
+    const size_t bytes = faces * 3 * sizeof(uint32_t) + vertices * (sizeof(render::GpuVertex) + 3 * sizeof(float));
+    CHECK(std::strtoull(r.output.c_str() + sent + 33, nullptr, 10) == (bytes + (size_t(8) << 20) - 1) / (size_t(8) << 20));
+    CHECK(vertices > 500000);
     const std::string out = dir + "/rendered.png";
     const auto rendered = test::run_command(std::string(KAPPA_EXE) + " render " + test::shared_mesh("bunny-1M.ply") +
                                             " -q -o " + out + " --xf " + dir + "/first.xf --size " +
