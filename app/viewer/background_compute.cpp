@@ -280,11 +280,19 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
                                   : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report, m.rows.get()));
         set_stage("feature size");
         if (fields->has_curvature()) m.feature_size = feature_size(*m.mesh, *fields);
-        set_stage("default view");
-        const DefaultView view = default_view(*m.mesh, file_up_axis(request.path));  // as kappa render's
-        m.view_direction = view.eye, m.view_up = view.up;
         set_stage("scale space");
         m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields, m.rows.get()));
+        set_stage("default view");
+        // As kappa render's (app/mesh_drawing.cpp, view_surface): from the raw normals the scale space
+        // estimated the noise and denoised a noisy mesh already; other fields are smoothed, so the
+        // view reads the mesh at its own noise floor.
+        const std::optional<glm::vec3> up = file_up_axis(request.path);
+        const bool denoised = m.detail->denoised_at > 0;
+        const DefaultView view = request.normals_first
+                                     ? default_view_as_read(denoised ? m.detail->denoised : *m.mesh, up, denoised,
+                                                            m.rows.get())
+                                     : default_view(*m.mesh, up);
+        m.view_direction = view.eye, m.view_up = view.up;
         m.fields_s = seconds_since(t);
         if (fields->has_curvature()) m.summary = summarize(*fields);
         m.fields = std::move(fields);
