@@ -231,6 +231,7 @@ void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, con
     landing_view_ = {shown_.detail, camera, height};
     upload_s_ = 0;
     landing_slices_ = landing_frames_ = 0;
+    landing_longest_ms_ = 0;
     continue_first_landing(t);  // this frame's share: the empty buffers made, then slices
 }
 
@@ -244,7 +245,7 @@ void ViewerApp::continue_first_landing(std::chrono::steady_clock::time_point sin
         ++landing_slices_;
     } while (!done && seconds_since(since) < budget_s);
     const float share = float(seconds_since(since));
-    landing_ms_.push_back(1e3f * share);
+    landing_longest_ms_ = std::max(landing_longest_ms_, 1e3f * share);
     upload_s_ += share;
     redraw_frames_ = 2;
     if (!done) return;
@@ -408,8 +409,8 @@ void ViewerApp::draw_frame() {
                     model_->mesh->face_count(), first_frame_s_, model_->load_s, model_->fields_s, upload_s_);
         if (frames_before_first_view_ > 0)
             std::printf("; %zu frames drawn while the worker made its fields, %zu while it was sent to the GPU "
-                        "in %zu slices",
-                        frames_before_first_view_, landing_frames_, landing_slices_);
+                        "in %zu slices (longest share %.1f ms)",
+                        frames_before_first_view_, landing_frames_, landing_slices_, landing_longest_ms_);
         std::printf("\n");
         std::fflush(stdout);
     }

@@ -132,6 +132,7 @@ private:
     std::unique_ptr<render::MeshBuffers> landing_;
     ShownFields landing_view_;
     size_t landing_slices_ = 0, landing_frames_ = 0;  // the first model's, reported with the first frame
+    float landing_longest_ms_ = 0;                    // the window thread's longest share of a frame
 
     // Scripted runs.
     size_t step_ = 0;
