@@ -66,7 +66,7 @@ void Renderer::set_mesh(const Mesh& mesh, MeshBuffers::Prepared&& prepared) {
 void Renderer::set_mesh(std::unique_ptr<MeshBuffers> buffers) {
     mesh_.reset();
     mesh_ = std::move(buffers);
-    if (mesh_) mesh_->upload_step(std::numeric_limits<size_t>::max());  // whatever is left of a landing
+    if (mesh_) mesh_->finish_upload();  // whatever is left of a landing
 }
 
 void Renderer::update_fields(const Mesh& mesh, const SurfaceFields& fields, float feature_size,

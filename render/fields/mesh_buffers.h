@@ -62,9 +62,10 @@ public:
     // The same sent in slices, for a viewer whose frames must not wait for a big mesh's first
     // view (a 17.8M-face mesh: 213 MB of triangles, 890 MB of vertex records and positions):
     // the buffers are made empty, then upload_step sends the triangles, the records and the
-    // positions into them, at most `bytes` a call. Nothing may be drawn from these buffers
+    // positions into them, at most `bytes` a call, and one more call makes the spare buffers
+    // that later views' fields go to (begin_upload). Nothing may be drawn from these buffers
     // until upload_step returns true (the viewer keeps them aside until then); a begin_upload,
-    // upload or update_fields first sends what is left.
+    // upload or update_fields first sends what is left (without the spare buffers).
     struct InSlices {};
     MeshBuffers(const Mesh& mesh, Prepared&& prepared, InSlices);
     ~MeshBuffers();
@@ -87,6 +88,7 @@ public:
     // begin_upload, or an upload or update_fields, drops a pending one.
     void begin_upload(FieldUpload&& prepared);
     bool upload_step(size_t bytes);  // true when nothing is pending any more
+    void finish_upload();            // sends what is left at once (a landing: without the spare buffers)
     bool upload_pending() const { return pending_ != nullptr; }
     float upload_progress() const;   // of the pending upload: the fraction of its bytes sent (1: none pending)
     const FaceClusters& face_clusters() const { return face_clusters_; }
@@ -183,6 +185,7 @@ private:
         size_t size;
     };
     std::vector<UploadPart> pending_parts() const;
+    bool send_pending(size_t bytes, bool make_spare);  // upload_step's work
     std::unique_ptr<PendingUpload> pending_;
     GLuint spare_vertex_buffer_ = 0, spare_position_buffer_ = 0;  // made by the first begin_upload
     GLuint vao_ = 0, vertex_buffer_ = 0, triangle_buffer_ = 0;
