@@ -22,6 +22,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,8 @@ public:
     // angle or detail: same_preparation tells.
     MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
                 const ProgressFn& progress = {});
+    MeshDrawing(const MeshDrawing&) = delete;  // a thread of its own reads mesh() and adjacency() (clusters_)
+    MeshDrawing& operator=(const MeshDrawing&) = delete;
 
     // The mesh as drawn, and its bounds: in drawing units (geometry/mesh/drawing_units.h), which are the
     // model's own but for meshes far from unit size; cameras are in the same units (make_camera).
@@ -93,9 +96,10 @@ public:
 
 private:
     SurfaceFields compute_fields();
-    // What the preparation found that building the GPU buffers would find again: the rows and
-    // the orientation (a view's detail fields move the positions alone, so they serve its mesh too).
-    render::MeshFacts mesh_facts() const { return {&adjacency_, outside_out_}; }
+    // What the preparation found or made that building the GPU buffers would find again: the
+    // rows, the orientation and the face clusters (a view's detail fields move the positions
+    // alone, so they serve its mesh too). Once: the clusters are moved out.
+    render::MeshFacts take_mesh_facts();
     // prepare_view's work for at most about `seconds`; chunk: DetailFieldsJob's.
     bool work_on_view(render::Renderer& renderer, const render::Camera& camera, glm::ivec2 size, double seconds,
                       size_t chunk);
@@ -109,6 +113,9 @@ private:
     float crease_angle_ = 0;
     SplitMesh drawn_;
     VertexFaces adjacency_;  // drawn_.mesh's vertex-face rows
+    // drawn_.mesh's face clusters (MeshBuffers::face_clusters_of, serial), made on a thread of
+    // their own while the fields are computed, for the first view's buffers.
+    std::future<FaceClusters> clusters_;
     render::BoundingSphere bounds_;
     StageTimes times_;
     SurfaceFields fields_;

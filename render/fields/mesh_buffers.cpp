@@ -46,9 +46,9 @@ void set_vertex_attributes() {
 }  // namespace
 
 MeshBuffers::Prepared MeshBuffers::prepare(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
-                                           const std::vector<glm::vec3>& fine_normals, const MeshFacts& known) {
+                                           const std::vector<glm::vec3>& fine_normals, MeshFacts known) {
     Prepared p;
-    p.layout = layout_of(mesh, fields.flags, known);
+    p.layout = layout_of(mesh, fields.flags, std::move(known));
     p.upload = prepare_field_upload(mesh, fields, feature_size, fine_normals, p.layout.clusters);
     return p;
 }
@@ -72,14 +72,19 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, Prepared&& prepared, InSlices)
     pending_->first_landing = true;
 }
 
-MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags,
-                                               const MeshFacts& known) {
+FaceClusters MeshBuffers::face_clusters_of(const Mesh& mesh, const VertexFaces* rows) {
+    return cluster_faces(mesh, kClusterFaces, rows);
+}
+
+MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags, MeshFacts known) {
     // The clusters and the back faces both walk the vertex-face rows.
     VertexFaces built;
     const VertexFaces* rows = known.rows;
     if (!rows) built = build_vertex_faces(mesh), rows = &built;
     MeshLayout out;
-    FaceClusters clusters = cluster_faces(mesh, kClusterFaces, rows);
+    FaceClusters clusters = known.clusters ? std::move(*known.clusters) : face_clusters_of(mesh, rows);
+    if (clusters.face_order.size() != mesh.face_count() || clusters.vertex_slot.size() != mesh.vertex_count())
+        throw std::invalid_argument("MeshBuffers: face clusters of another mesh");
     out.bounds = bounding_sphere(mesh);
     out.back_faces = back_face_visibility(mesh, *rows, known.outside_out ? *known.outside_out : is_outside_out(mesh));
     // Triangles in cluster order, so the contour pass can draw runs of them,

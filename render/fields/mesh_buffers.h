@@ -22,12 +22,14 @@
 namespace kappa::render {
 
 // What a caller may already know of a mesh, so that building its buffers need not find it
-// again (app/mesh_drawing.cpp keeps both from its preparation): its vertex-face rows
-// (build_vertex_faces) and whether its normals point clearly outside (is_outside_out,
-// geometry/mesh/orientation.h). Unknown: found by MeshBuffers::layout_of.
+// again (app/mesh_drawing.cpp keeps the first two from its preparation and makes the clusters
+// while the fields are computed): its vertex-face rows (build_vertex_faces), whether its
+// normals point clearly outside (is_outside_out, geometry/mesh/orientation.h), and its
+// MeshBuffers::face_clusters_of. Unknown: found by MeshBuffers::layout_of.
 struct MeshFacts {
     const VertexFaces* rows = nullptr;
     std::optional<bool> outside_out;
+    std::optional<FaceClusters> clusters;
 };
 
 class MeshBuffers {
@@ -48,7 +50,10 @@ public:
         BoundingSphere bounds;
         BackFaceVisibility back_faces;
     };
-    static MeshLayout layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags, const MeshFacts& known = {});
+    static MeshLayout layout_of(const Mesh& mesh, const std::vector<uint8_t>& flags, MeshFacts known = {});
+    // The face clusters the triangles are uploaded in (geometry/culling/face_clusters.h; one
+    // thread: 2 s for 17.8M faces). rows: the mesh's vertex-face rows (null: built here).
+    static FaceClusters face_clusters_of(const Mesh& mesh, const VertexFaces* rows = nullptr);
     // Everything the first constructor computes before any GL call: the layout and the
     // fields' upload prepared in its clusters' order (prepare_field_upload; any thread).
     struct Prepared {
@@ -56,7 +61,7 @@ public:
         FieldUpload upload;
     };
     static Prepared prepare(const Mesh& mesh, const SurfaceFields& fields, float feature_size,
-                            const std::vector<glm::vec3>& fine_normals = {}, const MeshFacts& known = {});
+                            const std::vector<glm::vec3>& fine_normals = {}, MeshFacts known = {});
     // The same as the first constructor from what was prepared beforehand: GL calls alone.
     MeshBuffers(const Mesh& mesh, Prepared&& prepared);
     // The same sent in slices, for a viewer whose frames must not wait for a big mesh's first
