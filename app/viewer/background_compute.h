@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -48,6 +49,10 @@ struct Model {
     // of an inside-out mesh): render::MeshFacts.
     std::shared_ptr<const VertexFaces> rows;
     std::optional<bool> outside_out;  // unknown: found when the buffers are built
+    // The mesh's face clusters (MeshBuffers::face_clusters_of, one thread), made on a thread of
+    // their own from the load on, beside the fields, for its first view's buffers; the viewer
+    // drops them once it is shown.
+    std::shared_future<FaceClusters> clusters;
     SmoothingOptions smoothing;
     ModelSummary summary;
     StageTimes stages;
@@ -86,9 +91,10 @@ public:
         render::Camera camera;
         int height = 1;
         float detail_px = 0;
-        // The model's rows and orientation (a first view's buffers: render::MeshFacts).
+        // The model's rows, orientation and clusters (a first view's buffers: render::MeshFacts).
         std::shared_ptr<const VertexFaces> rows;
         std::optional<bool> outside_out;
+        std::shared_future<FaceClusters> first_clusters;
     };
     struct ViewResult {
         std::shared_ptr<const Mesh> mesh;  // whose fields these are

@@ -210,14 +210,21 @@ void ViewerApp::show_model() {
 void ViewerApp::mesh_uploaded(float window_s) {
     renderer_->set_creases(model_->crease_points);
     face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
+    model_->clusters = {};  // the uploaded ones serve from now on
     upload_s_ = window_s;
+}
+
+render::MeshFacts ViewerApp::mesh_facts() const {
+    render::MeshFacts facts{model_->rows.get(), model_->outside_out, std::nullopt};
+    if (model_->clusters.valid()) facts.clusters = model_->clusters.get();
+    return facts;
 }
 
 void ViewerApp::request_first_view() {
     first_view_pending_ = true;
     shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
     compute_.request_view({model_->mesh, model_->fields, model_->detail, nullptr, shown_.camera, shown_.height,
-                           shown_.detail, model_->rows, model_->outside_out});
+                           shown_.detail, model_->rows, model_->outside_out, model_->clusters});
 }
 
 // A big model's first view from the worker, its upload prepared there: sent in slices over the
