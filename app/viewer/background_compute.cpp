@@ -223,7 +223,7 @@ void BackgroundCompute::run() {
                 // A big model's first view (asked for as the model arrived) goes before the completion,
                 // and the completion waits until the window has sent it to the GPU: beside the
                 // completion's threads, faulting in memory of their own, llvmpipe took 6.4 s instead
-                // of 0.9 s to make the buffers for a 17.8M-face mesh (docs/gpu.md).
+                // of 4.5 s to make the buffers for a 17.8M-face mesh (docs/gpu.md).
                 if (!quit_ && !pending_) {
                     run_pending_view(lock);
                     first_view_out_ = done_view_ && done_view_->first;

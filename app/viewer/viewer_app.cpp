@@ -286,8 +286,11 @@ void ViewerApp::request_view_fields() {
                 show_first_view(*done->first, done->camera, done->height);
             else if (effective_detail() > 0)
                 request_first_view();  // the settings changed meanwhile: again with the new ones
-            else
-                first_view_pending_ = false, compute_.first_view_shown(), show_model();  // detail off: the model's own fields
+            else {  // detail off: the model's own fields
+                first_view_pending_ = false;
+                compute_.first_view_shown();
+                show_model();
+            }
         }
         if (first_view_pending_) return;
     }
