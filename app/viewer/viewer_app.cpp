@@ -58,7 +58,8 @@ ViewerApp::ViewerApp(ViewerOptions options) : options_(std::move(options)), stat
 }
 
 ViewerApp::~ViewerApp() {
-    if (window_) {
+    if (window_) {  // GL objects go while the context is there
+        landing_.reset();
         renderer_.reset();
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
