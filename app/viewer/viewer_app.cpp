@@ -210,7 +210,7 @@ void ViewerApp::show_model() {
 // window thread's time the upload took.
 void ViewerApp::mesh_uploaded(float window_s) {
     renderer_->set_creases(model_->crease_points);
-    face_clusters_ = std::make_shared<FaceClusters>(renderer_->mesh()->face_clusters());
+    face_clusters_ = renderer_->mesh()->shared_face_clusters();
     model_->clusters = {};  // the uploaded ones serve from now on
     upload_s_ = window_s;
 }

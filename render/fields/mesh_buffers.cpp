@@ -106,7 +106,7 @@ MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vect
 void MeshBuffers::build(MeshLayout&& layout, bool send_triangles) {
     bounds_ = layout.bounds;
     back_faces_ = std::move(layout.back_faces);
-    face_clusters_ = std::move(layout.clusters);
+    face_clusters_ = std::make_shared<const FaceClusters>(std::move(layout.clusters));
     make_vertex_buffers(vertex_buffer_, position_buffer_);
     // The triangles with the whole records (vao_) and with the positions alone (position_vao_).
     glGenVertexArrays(1, &vao_);
@@ -150,7 +150,7 @@ void MeshBuffers::update_fields(const Mesh& mesh, const SurfaceFields& fields, f
                                 const std::vector<glm::vec3>& fine_normals) {
     if (mesh.vertex_count() != vertex_count_ || mesh.face_count() != face_count_)
         throw std::invalid_argument("MeshBuffers: new fields for a different mesh");
-    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, face_clusters_));
+    upload(prepare_field_upload(mesh, fields, feature_size, fine_normals, *face_clusters_));
 }
 
 void MeshBuffers::adopt(FieldUpload&& u) {
