@@ -27,13 +27,48 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
                          const ProgressFn& progress)
-    : settings_(settings), smoothing_(smoothing), progress_(progress) {
+    : MeshDrawing(std::move(input), settings, smoothing, InSteps{}) {
+    progress_ = progress;
+    while (!open_step()) {
+    }
+}
+
+MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing,
+                         InSteps)
+    : settings_(settings), smoothing_(smoothing), input_(std::move(input)) {}
+
+bool MeshDrawing::open_step() {
+    switch (opened_steps_) {
+        case 0: prepare_mesh(); break;
+        case 1: {
+            // With detail, the per-vertex curvature is needed only where a view
+            // blends in the raw estimate (zoomed in on a coarse mesh): computed then.
+            const bool detail = settings_.detail > 0;
+            fields_ = detail && !smoothing_.automatic ? compute_surface_normals(drawn_.mesh, &times_, &adjacency_)
+                                                      : compute_fields();
+            break;
+        }
+        case 2: {
+            const auto t_scale = std::chrono::steady_clock::now();
+            if (settings_.detail > 0) detail_source_ = render::make_detail_source(drawn_.mesh, fields_, &adjacency_);
+            else fs_ = feature_size(drawn_.mesh, fields_);  // with detail: per view
+            scale_s_ = seconds_since(t_scale);
+            break;
+        }
+        default: return true;
+    }
+    return ++opened_steps_ == kOpenSteps;
+}
+
+void MeshDrawing::prepare_mesh() {
+    Mesh input = std::move(*input_);
+    input_.reset();
     // The vertex-face rows serve the preparation (the creases), then (made the split mesh's)
     // the fields and the scale space: built once, timed as the fields' adjacency.
     const auto t_adjacency = std::chrono::steady_clock::now();
     adjacency_ = build_vertex_faces(input);
     times_.adjacency = seconds_since(t_adjacency);
-    DrawingPreparation prepared = prepare_for_drawing(input, adjacency_, settings.crease_angle);
+    DrawingPreparation prepared = prepare_for_drawing(input, adjacency_, settings_.crease_angle);
     units_ = prepared.units;
     turned_ = prepared.turned_inside_out;
     outside_out_ = prepared.outside_out;
@@ -45,15 +80,6 @@ MeshDrawing::MeshDrawing(Mesh input, const render::RenderSettings& settings, con
     clusters_ = std::async(thread_count() > 1 ? std::launch::async : std::launch::deferred,
                            [this] { return render::MeshBuffers::face_clusters_of(drawn_.mesh, &adjacency_); });
     bounds_ = render::bounding_sphere(drawn_.mesh);
-    // With detail, the per-vertex curvature is needed only where a view
-    // blends in the raw estimate (zoomed in on a coarse mesh): computed then.
-    const bool detail = settings.detail > 0;
-    fields_ = detail && !smoothing.automatic ? compute_surface_normals(drawn_.mesh, &times_, &adjacency_)
-                                             : compute_fields();
-    const auto t_scale = std::chrono::steady_clock::now();
-    if (detail) detail_source_ = render::make_detail_source(drawn_.mesh, fields_, &adjacency_);
-    else fs_ = feature_size(drawn_.mesh, fields_);  // with detail: per view
-    scale_s_ = seconds_since(t_scale);
 }
 
 render::MeshFacts MeshDrawing::take_mesh_facts() {

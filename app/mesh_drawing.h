@@ -40,6 +40,14 @@ public:
                 const ProgressFn& progress = {});
     MeshDrawing(const MeshDrawing&) = delete;  // a thread of its own reads mesh() and adjacency() (clusters_)
     MeshDrawing& operator=(const MeshDrawing&) = delete;
+    // The same work in steps, for a page that has one thread (web/): the constructor keeps the
+    // mesh, then each open_step does one of the first constructor's stages (the preparation and
+    // split, the fields, the scale space) and returns true once the drawing is open. Nothing
+    // else may be asked of the drawing before.
+    struct InSteps {};
+    MeshDrawing(Mesh input, const render::RenderSettings& settings, const SmoothingOptions& smoothing, InSteps);
+    bool open_step();
+    bool opened() const { return opened_steps_ == kOpenSteps; }
 
     // The mesh as drawn, and its bounds: in drawing units (geometry/mesh/drawing_units.h), which are the
     // model's own but for meshes far from unit size; cameras are in the same units (make_camera).
@@ -96,6 +104,7 @@ public:
 
 private:
     SurfaceFields compute_fields();
+    void prepare_mesh();  // the first step: units, creases, orientation, the split, the clusters' start
     // What the preparation found or made that building the GPU buffers would find again: the
     // rows, the orientation and the face clusters (a view's detail fields move the positions
     // alone, so they serve its mesh too). Once: the clusters are moved out.
@@ -106,6 +115,9 @@ private:
 
     render::RenderSettings settings_;
     SmoothingOptions smoothing_;  // as given (model units)
+    std::optional<Mesh> input_;   // until the first step
+    static constexpr int kOpenSteps = 3;
+    int opened_steps_ = 0;
     DrawingUnits units_;
     bool turned_ = false;
     bool outside_out_ = false;  // DrawingPreparation's

@@ -196,13 +196,15 @@ TEST_CASE("the page draws a colour map's bar and hatching as kappa render does",
 // (tests/test_render_sliced_preparation.cpp: the page never left
 // "loading" on such a mesh). Measured 2026-11-27 on the 2-core machine:
 // zooming in 23 slices, the longest 46 ms of 367 ms of work; back out 14
-// slices, the longest 36 ms of 203 ms.
+// slices, the longest 36 ms of 203 ms. Opening the mesh is cut too, into the
+// steps of MeshDrawing::open_step, ahead of the first view's slices: 43
+// slices, the longest 210 ms of 1.4 s (before, one task did all of the opening).
 TEST_CASE("the page prepares a new view's fields in slices and then draws what kappa render draws", "[web]") {
     const std::string meshes = mesh_folder({}), out = test::temp_dir();
     write_binary_ply(subdivide_at_midpoints(load_mesh(test::shared_mesh("bunny.ply"))), meshes + "/bunny-x4.ply");
     drive_page(meshes, out, "zoom:bunny:mesh=meshes/bunny-x4.ply\\&view=30,20\\&size=800x600\\&panel=off:6");
     const std::string json = test::read_file(out + "/bunny.json");
-    // [{"zoom": "in", "preparation": {"slices": N, "longest_ms": X, "work_ms": Y, ...}, ...}, ...]
+    // [{"zoom": "open", "preparation": {"slices": N, "longest_ms": X, "work_ms": Y, ...}, ...}, ...]
     const std::regex record("\"slices\": (\\d+), \"longest_ms\": ([0-9.e+-]+), \"work_ms\": ([0-9.e+-]+)");
     size_t preparations = 0;
     for (auto it = std::sregex_iterator(json.begin(), json.end(), record); it != std::sregex_iterator(); ++it) {
@@ -212,11 +214,13 @@ TEST_CASE("the page prepares a new view's fields in slices and then draws what k
                             << work << " ms");
         CHECK(slices >= 4);
         CHECK(longest <= 0.5 * work);
-        CHECK(longest <= 150.0);
+        // The first opens the mesh too, a step at a time (MeshDrawing::open_step: the preparation and
+        // split, the fields, the scale space; 210 ms at most of 1.4 s here), then its view's fields.
+        if (preparations > 0) CHECK(longest <= 150.0);
         ++preparations;
     }
     INFO(json);
-    CHECK(preparations == 2);  // zoomed in, then back out
+    CHECK(preparations == 3);  // opened, zoomed in, then back out
 
     REQUIRE(test::run_command(cli("render " + meshes + "/bunny-x4.ply --view 30,20 --size 800x600 -q -o " + out +
                                   "/cli.png"))

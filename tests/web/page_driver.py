@@ -23,8 +23,9 @@ OUT and prints one line "NAME: ..." with what it saw:
     orbit:NAME:QUERY:N   then N drag steps of orbiting; frames a second
     zoom:NAME:QUERY:N    then N wheel clicks in, and once the view's fields are
                          prepared (in slices) N clicks out: writes NAME.json
-                         with each preparation's slices (the page's
-                         times.preparations) and the longest main-thread tasks
+                         with the opening's and each zoom's preparation's
+                         slices (the page's times.preparations) and the
+                         longest main-thread tasks
                          seen meanwhile (PerformanceObserver 'longtask', over 50
                          ms), and NAME.png once the view is drawn back out
 
@@ -294,7 +295,9 @@ ZOOM_SCRIPT = '''(async () => {
     new PerformanceObserver(list => {
         for (const e of list.getEntries()) longest = Math.max(longest, e.duration);
     }).observe({ entryTypes: ['longtask'] });
-    const phases = [];
+    // The first preparation: opening the mesh (in steps) and its first view's fields.
+    const phases = [{ zoom: 'open', preparation: kappaPage.times.preparations[0], last_draw_ms: 0,
+                      longest_task_ms: 0 }];
     for (const dir of ['in', 'out']) {
         const before = kappaPage.times.preparations.length;
         for (let i = 0; i < %d; ++i) {

@@ -38,16 +38,33 @@ void PageState::open(const std::string& path) {
     drawing_.reset();
     shown_ = false;  // not the last mesh's fields meanwhile
     prepare();
-    reset_view();
+    view_reset_ = true;
 }
 
+// The drawing opens in steps, one a slice of prepare(seconds) (app/mesh_drawing.h: the
+// preparation and split, the fields, the scale space), so that the page shows its progress
+// and stays alive between them.
 void PageState::prepare() {
     drawing_.reset();
-    if (input_) drawing_ = std::make_unique<app::MeshDrawing>(*input_, options_.settings, options_.smoothing);
+    if (input_)
+        drawing_ = std::make_unique<app::MeshDrawing>(*input_, options_.settings, options_.smoothing,
+                                                      app::MeshDrawing::InSteps{});
+}
+
+// Whatever is left of opening the drawing, at once (a download, a new view asked for).
+app::MeshDrawing& PageState::open_drawing() {
+    while (!drawing_->open_step()) {
+    }
+    if (view_reset_) view_reset_ = false, reset_view();
+    return *drawing_;
 }
 
 void PageState::reset_view() {
     if (!drawing_) return;
+    if (!drawing_->opened()) {  // when it is
+        view_reset_ = true;
+        return;
+    }
     glm::vec3 center(0);
     const render::Camera c =
         app::make_camera(options_.camera, *drawing_, size_, &center);
@@ -85,6 +102,10 @@ void PageState::resize(int width, int height) {
 bool PageState::prepare(double seconds) {
     if (!drawing_) return true;
     emscripten_webgl_make_context_current(context_);
+    if (!drawing_->opened()) {
+        if (drawing_->open_step()) open_drawing();  // the requested view, now that there are bounds
+        return false;
+    }
     const bool done = drawing_->prepare_view_slice(*renderer_, camera(), size_, seconds);
     shown_ = shown_ || done;
     return done;
@@ -125,7 +146,7 @@ void PageState::draw() {
 void PageState::write(const std::string& path) {
     if (!drawing_) throw std::runtime_error(path + ": no mesh is open");
     emscripten_webgl_make_context_current(context_);
-    drawing_->write(*renderer_, camera(), options_.settings, size_, path);
+    open_drawing().write(*renderer_, camera(), options_.settings, size_, path);
     shown_ = true;
 }
 

@@ -37,7 +37,9 @@ public:
     // once they are uploaded (app/mesh_drawing.h's prepare_view_slice).
     void set_moving(bool moving) { moving_ = moving; }
     bool prepare(double seconds);
-    bool view_prepared() const { return !drawing_ || drawing_->view_prepared(camera(), size_); }
+    bool view_prepared() const {
+        return !drawing_ || (drawing_->opened() && drawing_->view_prepared(camera(), size_));
+    }
     render::OrbitCamera& orbit() { return orbit_; }
     glm::ivec2 size() const { return size_; }
     bool has_mesh() const { return drawing_ != nullptr; }
@@ -50,7 +52,8 @@ public:
     const render::RenderSettings& settings() const { return options_.settings; }
 
 private:
-    void prepare();     // the MeshDrawing of input_ with the current settings
+    void prepare();     // the MeshDrawing of input_ with the current settings, to open in steps
+    app::MeshDrawing& open_drawing();  // drawing_, opened now if it is not yet
     void reset_view();  // the requested view of the mesh
     render::Camera camera() const { return {orbit_.view(), fov_}; }
 
@@ -65,6 +68,7 @@ private:
     glm::ivec2 size_{800, 600};
     bool moving_ = false;
     bool shown_ = false;  // the renderer holds fields of drawing_'s mesh
+    bool view_reset_ = false;  // the requested view is to be set once drawing_ is open
 };
 
 }  // namespace kappa::web
