@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
     time_it("cluster_faces", runs, [&] { kappa::cluster_faces(mesh, max_faces); });
     const kappa::VertexFaces rows = kappa::build_vertex_faces(mesh);
     time_it("cluster_faces (rows given)", runs, [&] { kappa::cluster_faces(mesh, max_faces, &rows); });
-    time_it("back_face_visibility (rows, orientation given)", runs, [&] { kappa::back_face_visibility(mesh, rows, true); });
+    time_it("back_face_visibility (rows, orientation given)", runs,
+            [&] { kappa::back_face_visibility(mesh, rows, true); });
     time_it("compute_cluster_bounds", runs, [&] { kappa::compute_cluster_bounds(mesh, normals, clusters); });
     time_it("both", runs, [&] { kappa::compute_cluster_bounds(mesh, normals, kappa::cluster_faces(mesh, max_faces)); });
 

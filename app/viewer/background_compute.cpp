@@ -173,7 +173,8 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
         auto first = std::make_shared<ViewResult::First>();
         render::MeshFacts facts{r.rows.get(), r.outside_out, std::nullopt};
         if (r.first_clusters.valid()) facts.clusters = r.first_clusters.get();
-        first->buffers = render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals, std::move(facts));
+        first->buffers =
+            render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals, std::move(facts));
         first->fields = std::move(d);
         out.first = std::move(first);
         return out;
@@ -283,9 +284,10 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             progress_ = f;
             set_stage(stage);
         };
+        const VertexFaces* rows = m.rows.get();
         auto fields = std::make_shared<SurfaceFields>(
-            request.normals_first ? compute_surface_normals(*m.mesh, &m.stages, m.rows.get())
-                                  : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report, m.rows.get()));
+            request.normals_first ? compute_surface_normals(*m.mesh, &m.stages, rows)
+                                  : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report, rows));
         set_stage("feature size");
         if (fields->has_curvature()) m.feature_size = feature_size(*m.mesh, *fields);
         set_stage("scale space");

@@ -393,7 +393,9 @@ void ViewerApp::draw_frame() {
     info.computing = compute_.busy() || first_view_pending_;
     // A first view's fields: no fraction known; then its slices to the GPU.
     info.progress = compute_.busy() ? compute_.progress() : landing_ ? landing_->upload_progress() : -1.0f;
-    info.stage = compute_.busy() ? compute_.stage() : landing_ ? "sending the view to the GPU" : "detail fields for the view";
+    info.stage = compute_.busy() ? compute_.stage()
+                 : landing_       ? "sending the view to the GPU"
+                                  : "detail fields for the view";
     info.frame_ms = median(frame_ms_);
     info.gl = window_->description();
     const float scale = window_->content_scale();

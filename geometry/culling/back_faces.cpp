@@ -57,7 +57,8 @@ BackFaceVisibility back_face_visibility(const Mesh& mesh) {
 BackFaceVisibility back_face_visibility(const Mesh& mesh, const VertexFaces& vf, bool outside_out) {
     BackFaceVisibility out;
     const size_t nv = mesh.vertex_count();
-    if (vf.offsets.size() != nv + 1) throw std::invalid_argument("back_face_visibility: vertex-face rows of another mesh");
+    if (vf.offsets.size() != nv + 1)
+        throw std::invalid_argument("back_face_visibility: vertex-face rows of another mesh");
     if (!outside_out) return out;
     // Every edge used at most once in each direction: two faces using it in one direction are a
     // wrong winding, three or more faces are two in one direction. An edge used once is open.
@@ -91,7 +92,9 @@ BackFaceVisibility back_face_visibility(const Mesh& mesh, const VertexFaces& vf,
     for (const glm::uvec2& e : open_edges) ends.push_back(e.x), ends.push_back(e.y);
     std::sort(ends.begin(), ends.end());
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-    const auto slot = [&](uint32_t v) { return uint32_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin()); };
+    const auto slot = [&](uint32_t v) {
+        return uint32_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin());
+    };
     UnionFind boundary(ends.size());
     for (const glm::uvec2& e : open_edges) boundary.unite(slot(e.x), slot(e.y));
     std::map<uint32_t, size_t> hole_of_root;  // in order of each hole's smallest vertex: deterministic

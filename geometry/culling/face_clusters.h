@@ -40,11 +40,11 @@ struct FaceClusters {
 //
 // Input:  mesh (vertex indices must be < vertex_count(); any other defect is
 //         fine: isolated vertices, repeated indices, non-manifold edges),
-//         max_faces >= 1 (0 is treated as 1), vf the mesh's vertex-face rows
-//         (build_vertex_faces; null: built here).
+//         max_faces >= 1 (0 is treated as 1), rows the mesh's vertex-face
+//         rows (build_vertex_faces; null: built here).
 // Output: every face in exactly one cluster, vertex_order and vertex_slot; each cluster has 1..max_faces
 //         faces, all connected through shared vertices. An empty mesh gives
 //         zero clusters (cluster_start = {0}). Deterministic, O(V + F).
-FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces = 256, const VertexFaces* vf = nullptr);
+FaceClusters cluster_faces(const Mesh& mesh, uint32_t max_faces = 256, const VertexFaces* rows = nullptr);
 
 }  // namespace kappa
