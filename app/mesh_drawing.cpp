@@ -61,6 +61,7 @@ bool MeshDrawing::open_step() {
 }
 
 void MeshDrawing::prepare_mesh() {
+    if (!input_) throw std::logic_error("MeshDrawing: opened again after a failed step");
     Mesh input = std::move(*input_);
     input_.reset();
     // The vertex-face rows serve the preparation (the creases), then (made the split mesh's)

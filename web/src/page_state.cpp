@@ -53,10 +53,21 @@ void PageState::prepare() {
 
 // Whatever is left of opening the drawing, at once (a download, a new view asked for).
 app::MeshDrawing& PageState::open_drawing() {
-    while (!drawing_->open_step()) {
+    while (!open_step()) {
     }
     if (view_reset_) view_reset_ = false, reset_view();
     return *drawing_;
+}
+
+// A step that fails (its message is the page's error) leaves no drawing half open.
+bool PageState::open_step() {
+    try {
+        return drawing_->open_step();
+    } catch (...) {
+        drawing_.reset();
+        input_.reset();
+        throw;
+    }
 }
 
 void PageState::reset_view() {
@@ -103,7 +114,7 @@ bool PageState::prepare(double seconds) {
     if (!drawing_) return true;
     emscripten_webgl_make_context_current(context_);
     if (!drawing_->opened()) {
-        if (drawing_->open_step()) open_drawing();  // the requested view, now that there are bounds
+        if (open_step()) open_drawing();  // the requested view, now that there are bounds
         return false;
     }
     const bool done = drawing_->prepare_view_slice(*renderer_, camera(), size_, seconds);

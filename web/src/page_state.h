@@ -54,6 +54,7 @@ public:
 private:
     void prepare();     // the MeshDrawing of input_ with the current settings, to open in steps
     app::MeshDrawing& open_drawing();  // drawing_, opened now if it is not yet
+    bool open_step();                  // drawing_'s next step (MeshDrawing::open_step)
     void reset_view();  // the requested view of the mesh
     render::Camera camera() const { return {orbit_.view(), fov_}; }
 
