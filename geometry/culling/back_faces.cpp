@@ -1,6 +1,6 @@
 #include "back_faces.h"
 
-#include "geometry/mesh/edge_table.h"  // is_valid_face
+#include "geometry/mesh/edge_table.h"  // is_valid_face, sort_short_run
 #include "geometry/mesh/orientation.h"
 #include "geometry/mesh/union_find.h"
 #include "geometry/parallel/parallel.h"
@@ -28,12 +28,7 @@ void edges_to_larger(const Mesh& mesh, const VertexFaces& vf, uint32_t v, std::v
         if (next > v) keys.push_back(uint64_t(next) << 1 | 1);
         if (prev > v) keys.push_back(uint64_t(prev) << 1);
     }
-    if (keys.size() > 32) {
-        std::sort(keys.begin(), keys.end());
-        return;
-    }
-    for (size_t i = 1; i < keys.size(); ++i)  // most rows give 3 to 4 keys
-        for (size_t j = i; j > 0 && keys[j - 1] > keys[j]; --j) std::swap(keys[j - 1], keys[j]);
+    sort_short_run(keys.data(), keys.data() + keys.size());
 }
 
 // A row's faces lie anywhere in memory: asking for a later vertex's while working on this one's

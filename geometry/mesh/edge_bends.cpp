@@ -22,20 +22,6 @@ constexpr size_t kBlock = 16384;
 // How many corners ahead the pass asks for faces and normals (about four vertices).
 constexpr size_t kAhead = 24;
 
-// Sorts a short run of keys in place (most vertices have 6 to 12).
-void sort_keys(std::vector<uint64_t>& keys) {
-    if (keys.size() > 32) {
-        std::sort(keys.begin(), keys.end());
-        return;
-    }
-    for (size_t i = 1; i < keys.size(); ++i) {
-        const uint64_t key = keys[i];
-        size_t j = i;
-        for (; j > 0 && keys[j - 1] > key; --j) keys[j] = keys[j - 1];
-        keys[j] = key;
-    }
-}
-
 // The cosines the bends are compared with.
 struct BendLimits {
     float cos_flat, cos_sharp, cos_limit;
@@ -59,7 +45,8 @@ void bends_at(const Mesh& mesh, const VertexFaces& vf, size_t v, const BendLimit
         for (const uint32_t w : {face[(i + 1) % 3], face[(i + 2) % 3]})
             if (w > v) keys.push_back(uint64_t(w) << 32 | f);
     }
-    sort_keys(keys);  // by w, then face: each edge's faces in face order, as in the edge table
+    // By w, then face: each edge's faces in face order, as in the edge table.
+    sort_short_run(keys.data(), keys.data() + keys.size());
     for (size_t i = 0; i < keys.size();) {
         size_t j = i + 1;
         while (j < keys.size() && keys[j] >> 32 == keys[i] >> 32) ++j;

@@ -7,10 +7,8 @@
 
 namespace kappa {
 
-namespace {
-
-// Sorts a short range in place; most buckets hold 2 to 4 keys.
-void sort_bucket(uint64_t* begin, uint64_t* end) {
+void sort_short_run(uint64_t* begin, uint64_t* end) {
+    if (end - begin < 2) return;
     if (end - begin > 32) {
         std::sort(begin, end);
         return;
@@ -22,6 +20,8 @@ void sort_bucket(uint64_t* begin, uint64_t* end) {
         *j = key;
     }
 }
+
+namespace {
 
 // Large buffers are mapped in one call: page faults on first touch cost more
 // than the work on some machines (see io/prefault.h).
@@ -69,7 +69,7 @@ EdgeTable build_edge_table(const Mesh& mesh) {
     resize_prefaulted(edge_start, nv + 1);
     parallel_for_ranges(nv, [&](size_t first, size_t last) {
         for (size_t v = first; v < last; ++v) {
-            sort_bucket(keys.data() + offset[v], keys.data() + offset[v + 1]);
+            sort_short_run(keys.data() + offset[v], keys.data() + offset[v + 1]);
             uint32_t distinct = 0;
             for (uint32_t k = offset[v]; k < offset[v + 1]; ++k)
                 distinct += k == offset[v] || other_vertex(keys[k]) != other_vertex(keys[k - 1]);

@@ -30,6 +30,10 @@ inline bool is_valid_face(const Face& f, size_t vertex_count) {
            f[2] < vertex_count;
 }
 
+// Sorts keys in place: insertion sort for the short runs a vertex's edges give (most hold 2 to
+// 12 keys), std::sort beyond 32. Used wherever edges are gathered around one vertex.
+void sort_short_run(uint64_t* begin, uint64_t* end);
+
 // Counting sort of the half-edges by their smaller vertex, then a sort of each
 // vertex's short bucket by the larger vertex: O(V + F) plus tiny sorts.
 // Deterministic (independent of the thread count). Tens of milliseconds for
