@@ -75,6 +75,12 @@ void BackgroundCompute::frame_drawn() {
     wake_.notify_one();
 }
 
+render::MeshFacts ModelFacts::for_buffers() const {
+    render::MeshFacts facts{rows.get(), outside_out, std::nullopt};
+    if (clusters.valid()) facts.clusters = clusters.get();
+    return facts;
+}
+
 void BackgroundCompute::first_view_shown() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -110,8 +116,7 @@ void BackgroundCompute::recompute(const Model& model, const SmoothingOptions& sm
     r.smoothing = smoothing;
     r.crease_points = model.crease_points;
     r.input_vertices = model.input_vertices;
-    r.rows = model.rows;
-    r.outside_out = model.outside_out;
+    r.facts = model.facts;
     submit(std::move(r));
 }
 
@@ -171,10 +176,8 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
     render::DetailFields d = render::detail_fields(*r.mesh, *r.detail, *fields, scales);
     if (!r.clusters) {  // a first view: the buffers' layout made here too
         auto first = std::make_shared<ViewResult::First>();
-        render::MeshFacts facts{r.rows.get(), r.outside_out, std::nullopt};
-        if (r.first_clusters.valid()) facts.clusters = r.first_clusters.get();
         first->buffers =
-            render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals, std::move(facts));
+            render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals, r.facts.for_buffers());
         first->fields = std::move(d);
         out.first = std::move(first);
         return out;
@@ -256,8 +259,7 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             m.mesh = request.mesh;
             m.crease_points = request.crease_points;
             m.input_vertices = request.input_vertices;
-            m.rows = request.rows;
-            m.outside_out = request.outside_out;
+            m.facts = request.facts;
         } else {
             set_stage("loading");
             const auto t = std::chrono::steady_clock::now();
@@ -267,16 +269,16 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             const app::DrawingPreparation prepared = app::prepare_for_drawing(input, *rows, request.crease_angle);
             m.input_vertices = input.vertex_count();
             SplitMesh split = split_at_creases(std::move(input), prepared.creases.creases, rows.get());
-            m.rows = std::move(rows);
-            m.outside_out = prepared.outside_out;
+            m.facts.rows = std::move(rows);
+            m.facts.outside_out = prepared.outside_out;
             m.crease_points = render::crease_end_points(split);
             m.mesh = std::make_shared<const Mesh>(std::move(split.mesh));
             m.load_s = seconds_since(t);
         }
         // The first view's triangle order depends on the faces alone: made beside the fields (one
         // thread of work, 2 s for 17.8M faces), as kappa render's MeshDrawing does.
-        if (m.rows)
-            m.clusters = std::async(std::launch::async, [mesh = m.mesh, rows = m.rows] {
+        if (m.facts.rows && !m.facts.clusters.valid())
+            m.facts.clusters = std::async(std::launch::async, [mesh = m.mesh, rows = m.facts.rows] {
                 return render::MeshBuffers::face_clusters_of(*mesh, rows.get());
             }).share();
         const auto t = std::chrono::steady_clock::now();
@@ -284,14 +286,14 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             progress_ = f;
             set_stage(stage);
         };
-        const VertexFaces* rows = m.rows.get();
+        const VertexFaces* rows = m.facts.rows.get();
         auto fields = std::make_shared<SurfaceFields>(
             request.normals_first ? compute_surface_normals(*m.mesh, &m.stages, rows)
                                   : compute_surface_fields(*m.mesh, request.smoothing, &m.stages, report, rows));
         set_stage("feature size");
         if (fields->has_curvature()) m.feature_size = feature_size(*m.mesh, *fields);
         set_stage("scale space");
-        m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields, m.rows.get()));
+        m.detail = std::make_shared<render::DetailSource>(render::make_detail_source(*m.mesh, *fields, rows));
         set_stage("default view");
         // As kappa render's (app/mesh_drawing.cpp, view_surface): from the raw normals the scale space
         // estimated the noise and denoised a noisy mesh already; other fields are smoothed, so the
@@ -299,8 +301,7 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
         const std::optional<glm::vec3> up = file_up_axis(request.path);
         const bool denoised = m.detail->denoised_at > 0;
         const DefaultView view = request.normals_first
-                                     ? default_view_as_read(denoised ? m.detail->denoised : *m.mesh, up, denoised,
-                                                            m.rows.get())
+                                     ? default_view_as_read(denoised ? m.detail->denoised : *m.mesh, up, denoised, rows)
                                      : default_view(*m.mesh, up);
         m.view_direction = view.eye, m.view_up = view.up;
         m.fields_s = seconds_since(t);

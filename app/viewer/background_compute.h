@@ -31,6 +31,19 @@ struct ModelSummary {
     float k1_min = 0, k1_max = 0, k2_min = 0, k2_max = 0;  // over reliable vertices
 };
 
+// What the load learnt and made of a split mesh that building its GPU buffers would otherwise
+// find again (render::MeshFacts): its vertex-face rows (kept for the fields and the scale space
+// too), whether its normals point clearly outside after the turn of an inside-out mesh (unknown:
+// found when the buffers are built), and its face clusters (MeshBuffers::face_clusters_of, one
+// thread), made on a thread of their own from the load on, beside the fields.
+struct ModelFacts {
+    std::shared_ptr<const VertexFaces> rows;
+    std::optional<bool> outside_out;
+    std::shared_future<FaceClusters> clusters;
+    // For MeshBuffers::prepare: the clusters copied (waited for, when made but not done).
+    render::MeshFacts for_buffers() const;
+};
+
 // A mesh with everything the renderer needs.
 struct Model {
     std::string path;  // empty: the built-in model
@@ -44,15 +57,7 @@ struct Model {
     glm::vec3 view_up{0, 1, 0};         // the up axis it stands on
     std::vector<glm::vec3> crease_points;  // the crease pass's data (render/fields/field_upload.h); `mesh` is split there
     size_t input_vertices = 0;             // before the split
-    // The split mesh's vertex-face rows, kept from the load for the fields, the scale space
-    // and the first view's buffers; whether its normals point clearly outside (after the turn
-    // of an inside-out mesh): render::MeshFacts.
-    std::shared_ptr<const VertexFaces> rows;
-    std::optional<bool> outside_out;  // unknown: found when the buffers are built
-    // The mesh's face clusters (MeshBuffers::face_clusters_of, one thread), made on a thread of
-    // their own from the load on, beside the fields, for its first view's buffers; the viewer
-    // drops them once it is shown.
-    std::shared_future<FaceClusters> clusters;
+    ModelFacts facts;  // the viewer drops the clusters once the first view is shown
     SmoothingOptions smoothing;
     ModelSummary summary;
     StageTimes stages;
@@ -91,10 +96,7 @@ public:
         render::Camera camera;
         int height = 1;
         float detail_px = 0;
-        // The model's rows, orientation and clusters (a first view's buffers: render::MeshFacts).
-        std::shared_ptr<const VertexFaces> rows;
-        std::optional<bool> outside_out;
-        std::shared_future<FaceClusters> first_clusters;
+        ModelFacts facts;  // the model's, for a first view's buffers
     };
     struct ViewResult {
         std::shared_ptr<const Mesh> mesh;  // whose fields these are
@@ -155,8 +157,7 @@ private:
         float crease_angle = -1.0f;
         std::vector<glm::vec3> crease_points;  // recompute: the model's, kept
         size_t input_vertices = 0;
-        std::shared_ptr<const VertexFaces> rows;  // recompute: the model's, kept
-        std::optional<bool> outside_out;
+        ModelFacts facts;  // recompute: the model's, kept
         unsigned generation = 0;
     };
     void submit(Request request);

@@ -196,12 +196,12 @@ void ViewerApp::show_model() {
         if (render::needs_raw_curvature(*model_->detail, scales)) complete_fields();
         const render::DetailFields d = render::detail_fields(*model_->mesh, *model_->detail, *model_->fields, scales);
         renderer_->set_mesh(d.mesh, render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals,
-                                                                  mesh_facts()));
+                                                                  model_->facts.for_buffers()));
     } else {
         complete_fields();
         renderer_->set_mesh(*model_->mesh,
                             render::MeshBuffers::prepare(*model_->mesh, *model_->fields, model_->feature_size, {},
-                                                         mesh_facts()));
+                                                         model_->facts.for_buffers()));
     }
     mesh_uploaded(float(seconds_since(t)));
 }
@@ -211,21 +211,15 @@ void ViewerApp::show_model() {
 void ViewerApp::mesh_uploaded(float window_s) {
     renderer_->set_creases(model_->crease_points);
     face_clusters_ = renderer_->mesh()->shared_face_clusters();
-    model_->clusters = {};  // the uploaded ones serve from now on
+    model_->facts.clusters = {};  // the uploaded ones serve from now on
     upload_s_ = window_s;
-}
-
-render::MeshFacts ViewerApp::mesh_facts() const {
-    render::MeshFacts facts{model_->rows.get(), model_->outside_out, std::nullopt};
-    if (model_->clusters.valid()) facts.clusters = model_->clusters.get();
-    return facts;
 }
 
 void ViewerApp::request_first_view() {
     first_view_pending_ = true;
     shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
     compute_.request_view({model_->mesh, model_->fields, model_->detail, nullptr, shown_.camera, shown_.height,
-                           shown_.detail, model_->rows, model_->outside_out, model_->clusters});
+                           shown_.detail, model_->facts});
 }
 
 // A big model's first view from the worker, its upload prepared there: sent in slices over the

@@ -63,8 +63,6 @@ private:
     void mesh_uploaded(float window_s);
     // A big model's first view, sent a slice at a time (the frame's share timed from `since`).
     void continue_first_landing(std::chrono::steady_clock::time_point since);
-    // The model's rows and orientation, for building its buffers (render::MeshFacts).
-    render::MeshFacts mesh_facts() const;
     void request_view_fields();      // new detail fields when the view's scale changed
     void continue_field_upload(std::chrono::steady_clock::time_point since);
     bool view_fields_stale() const;  // the fields on the GPU are for another scale or direction of view
