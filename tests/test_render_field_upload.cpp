@@ -14,6 +14,22 @@
 
 using namespace kappa;
 
+namespace {
+
+// Other fields for the same mesh: twice the curvature (lines move).
+SurfaceFields with_curvature_doubled(SurfaceFields fields) {
+    for (size_t v = 0; v < fields.k1.size(); ++v) fields.k1[v] *= 2.0f, fields.k2[v] *= 2.0f;
+    return fields;
+}
+
+// From +z, the bounding sphere in view.
+render::Camera front_camera(const render::BoundingSphere& bounds) {
+    return render::Camera::look_at(bounds.center + glm::vec3(0, 0, 3.5f * bounds.radius), bounds.center, {0, 1, 0},
+                                   30.0f);
+}
+
+}  // namespace
+
 TEST_CASE("fields uploaded in slices are drawn whole, and only after the last slice", "[render][upload]") {
     const Mesh mesh = make_default_model();
     const SurfaceFields fields = compute_surface_fields(mesh);
@@ -22,11 +38,9 @@ TEST_CASE("fields uploaded in slices are drawn whole, and only after the last sl
     Mesh grown = mesh;
     const render::BoundingSphere bounds = render::bounding_sphere(mesh);
     for (glm::vec3& p : grown.positions) p = bounds.center + 1.04f * (p - bounds.center);
-    SurfaceFields other = fields;
-    for (size_t v = 0; v < other.k1.size(); ++v) other.k1[v] *= 2.0f, other.k2[v] *= 2.0f;
+    const SurfaceFields other = with_curvature_doubled(fields);
 
-    const auto camera = render::Camera::look_at(bounds.center + glm::vec3(0, 0, 3.5f * bounds.radius),
-                                                bounds.center, {0, 1, 0}, 30.0f);
+    const render::Camera camera = front_camera(bounds);
     render::RenderSettings settings;  // shading, contours, suggestive contours
     render::Renderer& renderer = test::renderer();
     auto picture = [&] { return render::render_to_image(renderer, camera, settings, 240, 200).pixels; };
@@ -94,11 +108,8 @@ TEST_CASE("a first view sent in slices draws what one upload draws", "[render][u
     const Mesh mesh = make_default_model();
     const SurfaceFields fields = compute_surface_fields(mesh);
     const float fs = feature_size(mesh, fields);
-    SurfaceFields other = fields;  // other fields for the same mesh: twice the curvature
-    for (size_t v = 0; v < other.k1.size(); ++v) other.k1[v] *= 2.0f, other.k2[v] *= 2.0f;
-    const render::BoundingSphere bounds = render::bounding_sphere(mesh);
-    const auto camera = render::Camera::look_at(bounds.center + glm::vec3(0, 0, 3.5f * bounds.radius),
-                                                bounds.center, {0, 1, 0}, 30.0f);
+    const SurfaceFields other = with_curvature_doubled(fields);
+    const render::Camera camera = front_camera(render::bounding_sphere(mesh));
     render::RenderSettings settings;
     settings.shading = render::Shading::None;  // lines alone: the curvature shows
     render::Renderer& renderer = test::renderer();

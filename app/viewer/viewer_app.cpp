@@ -237,15 +237,12 @@ void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, con
     continue_first_landing(t);  // this frame's share: the empty buffers made, then slices
 }
 
-// A frame's share of the first view's slices, budgeted as continue_field_upload's; the frame after
-// the last one draws it.
+// A frame's share of the first view's slices (send_slices); the frame after the last one draws it.
 void ViewerApp::continue_first_landing(std::chrono::steady_clock::time_point since) {
-    const double budget_s = std::max(0.004, 0.25e-3 * double(median(frame_ms_)));
-    bool done = false;
-    do {
-        done = landing_->upload_step(size_t(8) << 20);
+    const bool done = send_slices(since, [&](size_t bytes) {
         ++landing_slices_;
-    } while (!done && seconds_since(since) < budget_s);
+        return landing_->upload_step(bytes);
+    });
     const float share = float(seconds_since(since));
     landing_longest_ms_ = std::max(landing_longest_ms_, 1e3f * share);
     upload_s_ += share;
@@ -318,11 +315,18 @@ void ViewerApp::request_view_fields() {
 // 17.8M-face mesh's 890 MB held one frame for half a second on llvmpipe
 // (MeshBuffers::begin_upload; docs/gpu.md).
 void ViewerApp::continue_field_upload(std::chrono::steady_clock::time_point since) {
-    const double budget_s = std::max(0.004, 0.25e-3 * double(median(frame_ms_)));
-    while (!renderer_->continue_field_upload(size_t(8) << 20))
-        if (seconds_since(since) >= budget_s) break;
+    send_slices(since, [&](size_t bytes) { return renderer_->continue_field_upload(bytes); });
     landing_ms_.push_back(1e3f * float(seconds_since(since)));
     redraw_frames_ = 2;  // the frames go on until the new fields are drawn
+}
+
+// One frame's share of sending to the GPU: 8 MiB slices (send returns true after the last) until
+// none is left or a quarter of the median frame (at least 4 ms) since `since` is spent.
+bool ViewerApp::send_slices(std::chrono::steady_clock::time_point since, const std::function<bool(size_t)>& send) {
+    const double budget_s = std::max(0.004, 0.25e-3 * double(median(frame_ms_)));
+    while (!send(size_t(8) << 20))
+        if (seconds_since(since) >= budget_s) return false;
+    return true;
 }
 
 bool ViewerApp::view_fields_stale() const {

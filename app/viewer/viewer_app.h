@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -65,6 +66,7 @@ private:
     void continue_first_landing(std::chrono::steady_clock::time_point since);
     void request_view_fields();      // new detail fields when the view's scale changed
     void continue_field_upload(std::chrono::steady_clock::time_point since);
+    bool send_slices(std::chrono::steady_clock::time_point since, const std::function<bool(size_t)>& send);
     bool view_fields_stale() const;  // the fields on the GPU are for another scale or direction of view
     // The drawing sits right of the panel: its left edge and size in window
     // coordinates (as the cursor), and its size in framebuffer pixels.
