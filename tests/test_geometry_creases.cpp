@@ -76,8 +76,9 @@ TEST_CASE("Creases: the split gives each side of a crease its own vertices", "[c
     // Every cube corner meets three faces of different planes: three copies each.
     CHECK(s.mesh.vertex_count() == 24);
     CHECK(s.mesh.face_count() == 12);
-    REQUIRE(s.original.size() == 24);
-    for (size_t v = 0; v < 24; ++v) CHECK(s.mesh.positions[v] == cube.positions[s.original[v]]);
+    REQUIRE(s.copied_from.size() == 16);
+    for (size_t v = 0; v < 24; ++v) CHECK(s.mesh.positions[v] == cube.positions[s.original(v)]);
+    for (size_t v = 0; v < 8; ++v) CHECK(s.original(v) == v);  // the first side keeps the number
     // No vertex is shared by two faces of different planes.
     for (size_t v = 0; v < 24; ++v) {
         std::set<std::tuple<float, float, float>> planes;
@@ -95,4 +96,5 @@ TEST_CASE("Creases: the split gives each side of a crease its own vertices", "[c
     const SplitMesh none = split_at_creases(cube, {});
     CHECK(none.mesh.faces == cube.faces);
     CHECK(none.mesh.vertex_count() == 8);
+    CHECK(none.copied_from.empty());
 }

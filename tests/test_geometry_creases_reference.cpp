@@ -63,8 +63,6 @@ float reference_auto_crease_angle(const Mesh& mesh) {
 SplitMesh reference_split(Mesh mesh, const std::vector<glm::uvec2>& creases) {
     SplitMesh out;
     const size_t nv = mesh.vertex_count();
-    out.original.resize(nv);
-    for (size_t v = 0; v < nv; ++v) out.original[v] = uint32_t(v);
     if (creases.empty()) {  // most scans: no copy
         out.mesh = std::move(mesh);
         return out;
@@ -108,7 +106,7 @@ SplitMesh reference_split(Mesh mesh, const std::vector<glm::uvec2>& creases) {
                 } else {
                     copy_of_root[root] = uint32_t(out.mesh.positions.size());
                     out.mesh.positions.push_back(mesh.positions[v]);
-                    out.original.push_back(uint32_t(v));
+                    out.copied_from.push_back(uint32_t(v));
                 }
             }
             const uint32_t corner = vf.corners[begin + i];
@@ -164,7 +162,7 @@ void check_same(const Mesh& m, float angle) {
     const SplitMesh split = split_at_creases(m, creases), expected = reference_split(m, creases);
     CHECK(split.mesh.positions == expected.mesh.positions);
     CHECK(split.mesh.faces == expected.mesh.faces);
-    CHECK(split.original == expected.original);
+    CHECK(split.copied_from == expected.copied_from);
     CHECK(split.creases == expected.creases);
     CHECK(split.crease_faces == expected.crease_faces);
     // With the vertex-face rows given: the same split, and the rows made the split mesh's.

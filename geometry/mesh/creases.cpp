@@ -86,18 +86,18 @@ std::vector<uint64_t> corners_at(const Mesh& mesh, const std::vector<uint8_t>& m
 
 // Makes `vf` the rows of the split mesh: `moves` (corner, copy) take
 // corners out of their vertex's row (compacting the rows in place) into the
-// rows of the copies, vertices original.size() - copies on; original[copy]
+// rows of the copies, vertices first_copy on; copied_from[copy - first_copy]
 // is the vertex a copy was made from.
 void move_corners(VertexFaces& vf, std::vector<std::pair<uint32_t, uint32_t>> moves,
-                  const std::vector<uint32_t>& original, size_t first_copy) {
+                  const std::vector<uint32_t>& copied_from, size_t first_copy) {
     if (moves.empty()) return;
-    const size_t vertex_count = original.size();
+    const size_t vertex_count = first_copy + copied_from.size();
     std::vector<uint32_t> moved;  // sorted corners
     for (const auto& m : moves) moved.push_back(m.first);
     std::sort(moved.begin(), moved.end());
     auto is_moved = [&](uint32_t c) { return std::binary_search(moved.begin(), moved.end(), c); };
     std::vector<uint32_t> losing;  // the vertices that lose corners, sorted
-    for (const auto& m : moves) losing.push_back(original[m.second]);
+    for (const auto& m : moves) losing.push_back(copied_from[m.second - first_copy]);
     std::sort(losing.begin(), losing.end());
     losing.erase(std::unique(losing.begin(), losing.end()), losing.end());
     // Rows before the first of them stay where they are. Each losing row keeps its other corners; the
@@ -149,9 +149,6 @@ std::vector<uint64_t> crease_corners(const VertexFaces& vf, const std::vector<ui
 SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, VertexFaces* vf) {
     SplitMesh out;
     const size_t nv = mesh.vertex_count();
-    io::reserve_prefaulted(out.original, positions_room(nv));  // big buffers: their pages mapped up front (prefault.h)
-    out.original.resize(nv);
-    for (size_t v = 0; v < nv; ++v) out.original[v] = uint32_t(v);
     if (creases.empty()) {  // most scans: no copy
         out.mesh = std::move(mesh);
         return out;
@@ -205,8 +202,8 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, Ve
                     copy_of_root[root] = v;
                     first = false;
                 } else {
-                    copy_of_root[root] = uint32_t(out.original.size());
-                    out.original.push_back(v);
+                    copy_of_root[root] = uint32_t(nv + out.copied_from.size());
+                    out.copied_from.push_back(v);
                 }
             }
             if (copy_of_root[root] != v) moves.push_back({uint32_t(fans[begin + i]), copy_of_root[root]});
@@ -237,10 +234,10 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, Ve
     }
 
     out.mesh = std::move(mesh);
-    io::reserve_prefaulted(out.mesh.positions, out.original.size());
-    for (size_t v = nv; v < out.original.size(); ++v) out.mesh.positions.push_back(out.mesh.positions[out.original[v]]);
+    io::reserve_prefaulted(out.mesh.positions, nv + out.copied_from.size());
+    for (const uint32_t v : out.copied_from) out.mesh.positions.push_back(out.mesh.positions[v]);
     for (const auto& [corner, copy] : moves) out.mesh.faces[corner / 3][corner % 3] = copy;
-    if (vf) move_corners(*vf, std::move(moves), out.original, nv);
+    if (vf) move_corners(*vf, std::move(moves), out.copied_from, nv);
     for (glm::uvec2& c : out.creases) {
         const Face& f = out.mesh.faces[c.y];
         c = {f[c.x], f[(c.x + 1) % 3]};

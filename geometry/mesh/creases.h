@@ -78,9 +78,13 @@ ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float s
 
 struct SplitMesh {
     Mesh mesh;                            // the input with crease vertices duplicated per side
-    std::vector<uint32_t> original;       // for each vertex of `mesh`, the input vertex it copies
+    std::vector<uint32_t> copied_from;    // for each copy (the vertices from first_copy() on), its input vertex
     std::vector<glm::uvec2> creases;      // crease edges, in `mesh`'s vertex numbers (one side's copy)
     std::vector<glm::uvec2> crease_faces; // the two faces along each crease
+
+    size_t first_copy() const { return mesh.vertex_count() - copied_from.size(); }
+    // The input vertex that vertex v of `mesh` is, or copies.
+    uint32_t original(size_t v) const { return v < first_copy() ? uint32_t(v) : copied_from[v - first_copy()]; }
 };
 
 // Splits the mesh along `creases` (from find_creases): around each vertex,
