@@ -7,9 +7,11 @@
 #include "test_support.h"
 
 #include "geometry/io/mesh_io.h"
+#include "geometry/mesh/crease_candidates.h"
 #include "geometry/mesh/crease_vote.h"
 #include "geometry/mesh/creases.h"
 #include "geometry/mesh/edge_bends.h"
+#include "geometry/mesh/edge_table.h"
 #include "geometry/mesh/face_survey.h"
 #include "geometry/mesh/orientation.h"
 #include "geometry/mesh/primitives.h"
@@ -198,6 +200,67 @@ TEST_CASE("Creases: those found around the candidates are the whole pass's", "[c
     const std::vector<glm::uvec2> one = find_creases(jittered, 20);
     set_thread_count(0);
     CHECK(find_creases(jittered, 20) == one);
+}
+
+TEST_CASE("Crease candidates: a direction lies within kPackAngleDeg of its packing, packed alike in lanes",
+          "[creases]") {
+    // The candidates skip the angle test where a face packs as its corner's reference: sound only if
+    // every direction lies within kPackAngleDeg of its packing.
+    auto unpacked = [](uint32_t packed) {
+        auto component = [&](int k) { return float(int32_t(packed << (27 - 5 * k)) >> 27); };
+        return glm::vec3(component(0), component(1), component(2));
+    };
+    std::mt19937 rng(11);
+    std::normal_distribution<float> gauss;
+    std::uniform_real_distribution<float> scale(-30.0f, 30.0f);
+    double widest = 0;
+    for (int i = 0; i < 200000; ++i) {
+        glm::vec3 n[4];
+        for (glm::vec3& d : n) {
+            d = glm::vec3(gauss(rng), gauss(rng), gauss(rng));
+            // Near the packing's rounding edges too: components at half steps of the grid.
+            if (i % 4 == 1) d = glm::vec3(15.0f, std::round(d.y * 7.0f) + 0.5f, std::round(d.z * 7.0f) + 0.5f);
+            if (i % 4 == 2) d.z = 0;
+            d *= std::exp2(scale(rng));  // any length
+        }
+        const lanes::Lanes x{n[0].x, n[1].x, n[2].x, n[3].x}, y{n[0].y, n[1].y, n[2].y, n[3].y},
+            z{n[0].z, n[1].z, n[2].z, n[3].z};
+        const lanes::Ints4 four = CreaseCandidates::pack_direction(x, y, z);
+        for (int j = 0; j < 4; ++j) {
+            const uint32_t packed = CreaseCandidates::pack_direction(n[j].x, n[j].y, n[j].z);
+            REQUIRE(uint32_t(four[j]) == packed);
+            const glm::vec3 r = unpacked(packed);
+            const double cosine = glm::dot(glm::dvec3(n[j]), glm::dvec3(r)) /
+                                  (glm::length(glm::dvec3(n[j])) * glm::length(glm::dvec3(r)));
+            widest = std::max(widest, std::acos(std::min(1.0, cosine)) * 180.0 / M_PI);
+        }
+    }
+    CHECK(widest <= CreaseCandidates::kPackAngleDeg);
+    CHECK(widest > 2.0);  // the bound is near what the packing gives
+}
+
+TEST_CASE("The pass over the faces: four faces at once give what one face at a time gives", "[creases]") {
+    // survey_faces takes four faces at a time: the same volumes and the same candidates (one thread, so
+    // that the references are taken in face order) as each face added alone.
+    Mesh fandisk = load_mesh(test::shared_mesh("fandisk.obj"));
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> jitter(-0.004f, 0.004f);
+    for (glm::vec3& p : fandisk.positions) p += glm::vec3(jitter(rng), jitter(rng), jitter(rng));
+    fandisk.faces.push_back({0, 0, 1});                          // a repeated corner: no edges
+    fandisk.faces.push_back({2, 3, 4});                          // a degenerate face below:
+    fandisk.positions[4] = fandisk.positions[3];
+    fandisk.faces.push_back({5, 6, uint32_t(fandisk.vertex_count())});  // a missing corner: left out
+    set_thread_count(1);
+    for (const float angle : {kAutoCreaseAngle, 5.0f, 20.0f}) {
+        INFO("angle " << angle);
+        const FaceSurvey survey = survey_faces(fandisk, angle);
+        CreaseCandidates one_by_one(fandisk.vertex_count(), angle);
+        for (const Face& f : fandisk.faces)
+            if (is_valid_face(f, fandisk.vertex_count())) one_by_one.add_face(f, face_cross(fandisk, f));
+        CHECK(survey.crease_candidates == one_by_one.vertices());
+        CHECK(std::binary_search(survey.crease_candidates.begin(), survey.crease_candidates.end(), 3u));
+    }
+    set_thread_count(0);
 }
 
 TEST_CASE("The pass over the faces: volumes as the inside-out test sums them, whatever the thread count",

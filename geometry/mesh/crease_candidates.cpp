@@ -7,19 +7,6 @@
 
 namespace kappa {
 
-// r packed in 16 bits: three signed 5-bit components, round(15 n / max |n_k|), under a set bit 15 (0 is
-// "none yet"). Any direction serves as r, so the rounding (under 3 degrees) costs only a little of the
-// half angle's slack, and the references take 2 bytes a vertex.
-uint16_t CreaseCandidates::pack_reference(glm::vec3 n) {
-    const float scale = 15.0f / std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
-    uint32_t packed = 1u << 15;
-    for (int k = 0; k < 3; ++k) {
-        const float x = n[k] * scale;
-        packed |= (uint32_t(int(x + (x >= 0 ? 0.5f : -0.5f))) & 31u) << (5 * k);  // rounded
-    }
-    return uint16_t(packed);
-}
-
 CreaseCandidates::CreaseCandidates(size_t vertex_count, float angle_deg)
     : vertex_count_(vertex_count), reference_(new std::atomic<uint16_t>[vertex_count]()) {
     // edge_bends.cpp calls a pair a crease when the float dot product of its unit normals (face_normal:
@@ -35,6 +22,10 @@ CreaseCandidates::CreaseCandidates(size_t vertex_count, float angle_deg)
     // |c|^2 |r|^2, under 1e-6 of the squared cosine) are covered by 1e-5 more.
     cos2_half_ = float(std::cos(half) * std::cos(half) + 1e-5);
     everywhere_ = everywhere_ || !(cos2_half_ < 1.0f);
+    // A face packed as r is within kPackAngleDeg of r: within the half angle when the test above passes
+    // every angle up to kPackAngleDeg (cos2_half_ includes the margin; 1e-5 more covers the test's roundings).
+    const double pack_cos = std::cos(kPackAngleDeg * M_PI / 180.0);
+    same_pack_passes_ = !everywhere_ && double(cos2_half_) + 1e-5 <= pack_cos * pack_cos;
 }
 
 std::vector<uint32_t> CreaseCandidates::vertices() {

@@ -30,15 +30,21 @@ struct EnclosedVolumes {
 };
 EnclosedVolumes enclosed_volumes(const Mesh& mesh);
 glm::dvec3 vertex_centroid(const Mesh& mesh);
-// One face's term: six times the signed volume of (centroid, face); 0 for a
-// face with a missing corner or a volume that is not finite.
+// One face's term: six times the signed volume of (centroid, face),
+// (p0 - centroid) . ((p1 - p0) x (p2 - p0)), the cross product in float as a
+// face's normal is (face_cross, creases.h), the rest in double; 0 for a face
+// with a missing corner or a volume that is not finite. The pass over the
+// faces (face_survey.h) computes the cross product once for this and the
+// crease candidates.
+inline double tetrahedron_volume6(glm::vec3 corner0, glm::vec3 cross, glm::dvec3 centroid) {
+    const double v = glm::dot(glm::dvec3(corner0) - centroid, glm::dvec3(cross));
+    return std::isfinite(v) ? v : 0.0;
+}
 inline double tetrahedron_volume6(const Mesh& mesh, const Face& f, glm::dvec3 centroid) {
     const size_t n = mesh.positions.size();
     if (f[0] >= n || f[1] >= n || f[2] >= n) return 0;
-    const glm::dvec3 a = glm::dvec3(mesh.positions[f[0]]) - centroid, b = glm::dvec3(mesh.positions[f[1]]) - centroid,
-                     c = glm::dvec3(mesh.positions[f[2]]) - centroid;
-    const double v = glm::dot(a, glm::cross(b, c));
-    return std::isfinite(v) ? v : 0.0;
+    const glm::vec3 p0 = mesh.positions[f[0]];
+    return tetrahedron_volume6(p0, glm::cross(mesh.positions[f[1]] - p0, mesh.positions[f[2]] - p0), centroid);
 }
 
 bool is_inside_out(const EnclosedVolumes& volumes);
