@@ -80,11 +80,11 @@ void MeshDrawing::prepare_mesh() {
     // thread of work, 2 s for 17.8M faces). A page without threads makes it when it is needed.
     clusters_ = std::async(thread_count() > 1 ? std::launch::async : std::launch::deferred,
                            [this] { return render::MeshBuffers::face_clusters_of(drawn_.mesh, &adjacency_); });
-    bounds_ = render::bounding_sphere(drawn_.mesh);
+    bounds_ = render::bounding_sphere(drawn_.mesh, prepared.box);
 }
 
 render::MeshFacts MeshDrawing::take_mesh_facts() {
-    render::MeshFacts facts{&adjacency_, outside_out_, std::nullopt};
+    render::MeshFacts facts{&adjacency_, outside_out_, std::nullopt, bounds_};
     if (clusters_.valid()) facts.clusters = clusters_.get();
     return facts;
 }

@@ -13,8 +13,12 @@ Mesh load_mesh_or_default(const std::string& path) {
 
 DrawingPreparation prepare_for_drawing(Mesh& mesh, VertexFaces& vf, float crease_setting) {
     DrawingPreparation p;
-    p.units = drawing_units(mesh);
-    to_drawing_units(mesh, p.units);
+    p.box = position_bounds(mesh.positions);
+    p.units = drawing_units(p.box);
+    if (!p.units.identity()) {
+        to_drawing_units(mesh, p.units);
+        p.box = position_bounds(mesh.positions);
+    }
     // The angle first (a sample of the edges tells it on most meshes): the pass over the faces then
     // finds the crease candidates at it along with the volumes.
     const std::optional<float> angle = sampled_crease_angle(mesh, vf, crease_setting);

@@ -28,6 +28,7 @@ struct DrawingPreparation {
     bool turned_inside_out = false;
     bool outside_out = false;  // after the turn: the normals point clearly outside (back faces may be culled)
     ResolvedCreases creases;
+    PositionBounds box;  // of the mesh as prepared (in drawing units); the split, which copies vertices, keeps it
 };
 DrawingPreparation prepare_for_drawing(Mesh& mesh, VertexFaces& vf, float crease_setting);
 

@@ -8,8 +8,10 @@
 #include "test_render_fixtures.h"
 #include "test_support.h"
 
+#include "app/mesh_source.h"
 #include "geometry/mesh/drawing_units.h"
 #include "geometry/io/mesh_io.h"
+#include "render/camera/camera.h"
 #include "render/image/ink_agreement.h"
 #include "render/image/png_writer.h"
 
@@ -75,6 +77,30 @@ TEST_CASE("a view matrix converted to drawing units puts every point where it wa
     Mesh unit = mesh;
     for (glm::vec3& p : unit.positions) p *= 1e-20f;
     CHECK(drawing_units(unit).identity());
+}
+
+TEST_CASE("the preparation's box is the prepared mesh's, at any size, and gives its bounding sphere",
+          "[render][units]") {
+    // app/mesh_source.h: the box of the drawing copy serves the units, the split mesh's bounding sphere and
+    // the buffers' (MeshFacts), instead of a pass over the positions each.
+    for (const float scale : {1.0f, 1e20f, 1e-20f}) {
+        INFO("scale " << scale);
+        Mesh mesh = load_mesh(test::shared_mesh("fandisk.obj"));
+        for (glm::vec3& p : mesh.positions) p = p * scale + glm::vec3(3.0f * scale, 0, 0);
+        VertexFaces rows = build_vertex_faces(mesh);
+        const app::DrawingPreparation prepared = app::prepare_for_drawing(mesh, rows, 40.0f);
+        CHECK(prepared.units.identity() == (scale == 1.0f));
+        const PositionBounds box = position_bounds(mesh.positions);
+        CHECK(prepared.box.lo == box.lo);
+        CHECK(prepared.box.hi == box.hi);
+        const SplitMesh split = split_at_creases(std::move(mesh), prepared.creases.creases, &rows);
+        REQUIRE(!split.copied_from.empty());  // fandisk has creases: the split copied vertices
+        const render::BoundingSphere given = render::bounding_sphere(split.mesh, prepared.box),
+                                     found = render::bounding_sphere(split.mesh);
+        CHECK(given.center == found.center);
+        CHECK(given.radius == found.radius);
+        CHECK(found.radius > 0.5f);  // drawing units: fandisk's size, or unit radius
+    }
 }
 
 TEST_CASE("kappa render draws a mesh whose faces point inwards as it draws it the right way round", "[render][cli]") {

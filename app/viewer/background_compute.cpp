@@ -76,7 +76,7 @@ void BackgroundCompute::frame_drawn() {
 }
 
 render::MeshFacts ModelFacts::for_buffers() const {
-    render::MeshFacts facts{rows.get(), outside_out, std::nullopt};
+    render::MeshFacts facts{rows.get(), outside_out, std::nullopt, bounds};
     if (clusters.valid()) facts.clusters = clusters.get();
     return facts;
 }
@@ -271,6 +271,7 @@ BackgroundCompute::Result BackgroundCompute::execute(const Request& request) {
             SplitMesh split = split_at_creases(std::move(input), prepared.creases.creases, rows.get());
             m.facts.rows = std::move(rows);
             m.facts.outside_out = prepared.outside_out;
+            m.facts.bounds = render::bounding_sphere(split.mesh, prepared.box);
             m.crease_points = render::crease_end_points(split);
             m.mesh = std::make_shared<const Mesh>(std::move(split.mesh));
             m.load_s = seconds_since(t);

@@ -40,6 +40,7 @@ struct ModelFacts {
     std::shared_ptr<const VertexFaces> rows;
     std::optional<bool> outside_out;
     std::shared_future<FaceClusters> clusters;
+    std::optional<render::BoundingSphere> bounds;
     // For MeshBuffers::prepare: the clusters copied (waited for, when made but not done).
     render::MeshFacts for_buffers() const;
 };

@@ -163,7 +163,8 @@ void ViewerApp::adopt_results() {
     // A big new mesh shows up at once without multisampling; the frame after is full quality.
     quick_frame_ = model_->mesh->face_count() >= kQuickFirstFrameFaces;
     if (new_mesh) {
-        const render::BoundingSphere bounds = render::bounding_sphere(*model_->mesh);
+        const render::BoundingSphere bounds =
+            model_->facts.bounds ? *model_->facts.bounds : render::bounding_sphere(*model_->mesh);
         if (have_view_)
             orbit_.set_pivot(bounds.center);
         else
@@ -307,7 +308,7 @@ void ViewerApp::request_view_fields() {
         shown_ = {0, now, height};
         return;
     }
-    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail});
+    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail, {}});
 }
 
 // New fields reach the GPU in slices over several frames, each frame's

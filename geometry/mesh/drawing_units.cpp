@@ -18,11 +18,12 @@ glm::mat4 DrawingUnits::view_to_drawing(const glm::mat4& model_view) const {
     return glm::mat4(shrink * glm::dmat4(model_view) * from_drawing);
 }
 
-DrawingUnits drawing_units(const Mesh& mesh) {
+DrawingUnits drawing_units(const Mesh& mesh) { return drawing_units(position_bounds(mesh.positions)); }
+
+DrawingUnits drawing_units(const PositionBounds& box) {
     DrawingUnits units;
-    if (mesh.positions.empty()) return units;
-    glm::dvec3 lo(mesh.positions.front()), hi = lo;
-    for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+    if (box.empty()) return units;
+    const glm::dvec3 lo(box.lo), hi(box.hi);  // the float bounds, exactly
     const glm::dvec3 centre = 0.5 * (lo + hi);
     const double radius = 0.5 * glm::length(hi - lo);
     if (!(radius > 0) || !std::isfinite(radius) || (radius >= 1e-12 && radius <= 1e12)) return units;

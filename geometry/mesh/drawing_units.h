@@ -11,6 +11,7 @@
 #pragma once
 
 #include "mesh.h"
+#include "position_bounds.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -33,6 +34,8 @@ struct DrawingUnits {
 
 // Identity for radii in [1e-12, 1e12] (and for meshes without vertices).
 DrawingUnits drawing_units(const Mesh& mesh);
+// The same from the mesh's position_bounds.
+DrawingUnits drawing_units(const PositionBounds& box);
 // Moves the mesh's vertices into drawing units.
 void to_drawing_units(Mesh& mesh, const DrawingUnits& units);
 

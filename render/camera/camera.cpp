@@ -16,7 +16,9 @@
 
 namespace kappa::render {
 
-BoundingSphere bounding_sphere(const Mesh& mesh) {
+BoundingSphere bounding_sphere(const Mesh& mesh) { return bounding_sphere(mesh, position_bounds(mesh.positions)); }
+
+BoundingSphere bounding_sphere(const Mesh& mesh, const PositionBounds& box) {
     if (mesh.positions.empty()) return {};
     // The radius in blocks, in parallel: the largest is the same in any order.
     constexpr size_t kBlock = 65536;
@@ -24,7 +26,6 @@ BoundingSphere bounding_sphere(const Mesh& mesh) {
     auto each_block = [&](auto&& body) {
         parallel_for_chunked(blocks, [&](size_t b) { body(b, b * kBlock, std::min(n, (b + 1) * kBlock)); }, 1);
     };
-    const PositionBounds box = position_bounds(mesh.positions);
     if (box.empty()) return {};
     const glm::vec3 lo = box.lo, hi = box.hi;
     BoundingSphere s;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "geometry/mesh/mesh.h"
+#include "geometry/mesh/position_bounds.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -21,6 +22,8 @@ struct BoundingSphere {
 
 // Centre of the bounding box, radius to the farthest vertex.
 BoundingSphere bounding_sphere(const Mesh& mesh);
+// The same with the mesh's position_bounds (geometry/mesh/position_bounds.h) given.
+BoundingSphere bounding_sphere(const Mesh& mesh, const PositionBounds& box);
 
 struct Camera {
     glm::mat4 view{1};     // model -> camera coordinates

@@ -85,7 +85,7 @@ MeshBuffers::MeshLayout MeshBuffers::layout_of(const Mesh& mesh, const std::vect
     FaceClusters clusters = known.clusters ? std::move(*known.clusters) : face_clusters_of(mesh, rows);
     if (clusters.face_order.size() != mesh.face_count() || clusters.vertex_slot.size() != mesh.vertex_count())
         throw std::invalid_argument("MeshBuffers: face clusters of another mesh");
-    out.bounds = bounding_sphere(mesh);
+    out.bounds = known.bounds ? *known.bounds : bounding_sphere(mesh);
     out.back_faces = back_face_visibility(mesh, *rows, known.outside_out ? *known.outside_out : is_outside_out(mesh));
     // Triangles in cluster order, so the contour pass can draw runs of them,
     // and vertices in order of first use by those triangles, so a run's

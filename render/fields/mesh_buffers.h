@@ -25,11 +25,12 @@ namespace kappa::render {
 // again (app/mesh_drawing.cpp keeps the first two from its preparation and makes the clusters
 // while the fields are computed): its vertex-face rows (build_vertex_faces), whether its
 // normals point clearly outside (is_outside_out, geometry/mesh/orientation.h), and its
-// MeshBuffers::face_clusters_of. Unknown: found by MeshBuffers::layout_of.
+// MeshBuffers::face_clusters_of, and its bounding_sphere. Unknown: found by MeshBuffers::layout_of.
 struct MeshFacts {
     const VertexFaces* rows = nullptr;
     std::optional<bool> outside_out;
     std::optional<FaceClusters> clusters;
+    std::optional<BoundingSphere> bounds;
 };
 
 class MeshBuffers {
