@@ -3,14 +3,18 @@
 // default view it then takes (app/render_options.cpp, make_camera): drawing
 // units, the crease angle (auto: a sampled vote), one pass over the faces
 // (the inside-out volumes and the crease candidates), the creases around the
-// candidates, the split along them. Each stage timed alone on the loaded
-// mesh, then all of them in order as MeshDrawing runs them, next to the read
+// candidates, the split along them, the bounding sphere. Each stage timed
+// alone on the loaded mesh, then all of them as MeshDrawing runs them (the
+// app's own prepare_for_drawing), next to the read
 // they should not outweigh (issue 30, item 3), and the passes they replace.
 // Prints every run and the median.
 //
 //   bench_preparation [MESH] [RUNS]   (default: ../shared/meshes/bunny-1M.ply next to the repo, 5 runs)
 #include "bench_mesh.h"
 #include "time_it.h"
+
+#include "app/mesh_source.h"
+#include "render/camera/camera.h"
 
 #include "geometry/io/mesh_io.h"
 #include "geometry/mesh/crease_candidates.h"
@@ -76,21 +80,17 @@ int main(int argc, char** argv) {
     }
     time_it("default view (rows given)", runs, [&] { kappa::default_view_as_read(mesh, std::nullopt, false, &vf); });
     time_it("  default view (before)", runs, [&] { kappa::default_view_as_read(mesh); });
-    // As app/mesh_source.cpp's prepare_for_drawing and app/mesh_drawing.cpp: the copies stand for the
-    // mesh just read and its rows just built.
+    // What app/mesh_drawing.cpp does between the read and the fields (its "load" less the read): the
+    // app's prepare_for_drawing (app/mesh_source.cpp), the split and the bounding sphere. The copies stand
+    // for the mesh just read and its rows just built.
     time_it("copies + all of them", runs, [&] {
         kappa::Mesh m;
         m.positions.reserve(kappa::positions_room(mesh.vertex_count()));  // as a reader leaves it
         m.positions = mesh.positions, m.faces = mesh.faces;
         kappa::VertexFaces rows = vf;
-        const kappa::DrawingUnits units = kappa::drawing_units(m);
-        kappa::to_drawing_units(m, units);
-        const std::optional<float> a = kappa::sampled_crease_angle(m, rows, -1);  // auto
-        const kappa::FaceSurvey survey = kappa::survey_faces(m, a.value_or(0.0f));
-        if (kappa::is_inside_out(survey.volumes)) kappa::flip_faces(m, &rows);
-        const std::vector<glm::uvec2> creases = a ? kappa::creases_around(m, rows, *a, survey.crease_candidates)
-                                                  : kappa::resolve_creases(m, rows, -1).creases;
-        kappa::split_at_creases(std::move(m), creases, &rows);
+        const kappa::app::DrawingPreparation prepared = kappa::app::prepare_for_drawing(m, rows, -1);  // auto
+        const kappa::SplitMesh split = kappa::split_at_creases(std::move(m), prepared.creases.creases, &rows);
+        kappa::render::bounding_sphere(split.mesh, prepared.box);
     });
     time_it("  copies alone", runs, [&] {
         kappa::Mesh m;
