@@ -27,7 +27,11 @@
 // instead of 150 MB for 8% less CPU time.
 #include "heap_tuning.h"
 
+#include "geometry/io/prefault.h"
+
 #include <malloc.h>
+
+#include <cstdlib>
 
 namespace {
 
@@ -45,6 +49,18 @@ namespace kappa::app {
 
 void keep_large_blocks() {
     mallopt(M_MMAP_MAX, 0);  // no block from mmap: every freed block stays for reuse
+}
+
+HeapBlock::HeapBlock(size_t bytes) : data_(std::malloc(bytes)), bytes_(data_ ? bytes : 0) {
+    // Not even the top of the heap goes back (mallopt: -1 turns trimming off), or freeing a block
+    // over the trim threshold would give its pages back at once.
+    mallopt(M_TRIM_THRESHOLD, -1);
+}
+
+HeapBlock::~HeapBlock() { std::free(data_); }
+
+void HeapBlock::fault_in() {
+    if (data_) io::prefault(data_, bytes_);
 }
 
 }  // namespace kappa::app

@@ -75,6 +75,8 @@ public:
     // default on GPUs). For tests and benchmarks, to compare the two.
     void set_cpu_line_raster(bool on_cpu) { cpu_line_raster_ = on_cpu; }
     bool cpu_line_raster() const { return cpu_line_raster_; }
+    // llvmpipe and the like: GL buffers live in host memory.
+    bool software_gl() const { return software_gl_; }
     // Whether the surface and hatching-field passes may cull back faces where none can be seen
     // (render/surface/back_face_culling.h; on by default). For tests and benchmarks.
     void set_back_face_culling(bool on) {

@@ -1,5 +1,6 @@
 #include "app/viewer/background_compute.h"
 
+#include "app/heap_tuning.h"
 #include "app/mesh_source.h"
 #include "geometry/mesh/creases.h"
 #include "geometry/curvature/feature_size.h"
@@ -178,6 +179,7 @@ BackgroundCompute::ViewResult BackgroundCompute::execute_view(const ViewRequest&
         auto first = std::make_shared<ViewResult::First>();
         first->buffers =
             render::MeshBuffers::prepare(d.mesh, d.fields, d.feature_size, d.fine_normals, r.facts.for_buffers());
+        if (r.buffer_memory) r.buffer_memory->fault_in();
         first->fields = std::move(d);
         out.first = std::move(first);
         return out;

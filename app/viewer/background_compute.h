@@ -6,6 +6,7 @@
 // curvature code cannot be interrupted) and its result is dropped.
 #pragma once
 
+#include "app/heap_tuning.h"
 #include "geometry/mesh/mesh.h"
 #include "geometry/surface_analysis.h"
 #include "geometry/surface_fields.h"
@@ -98,6 +99,9 @@ public:
         int height = 1;
         float detail_px = 0;
         ModelFacts facts;  // the model's, for a first view's buffers
+        // A first view for a software GL: the window thread's block for its buffers
+        // (MeshBuffers::landing_bytes), faulted in here once they are prepared (app/heap_tuning.h).
+        std::shared_ptr<app::HeapBlock> buffer_memory;
     };
     struct ViewResult {
         std::shared_ptr<const Mesh> mesh;  // whose fields these are

@@ -219,8 +219,12 @@ void ViewerApp::mesh_uploaded(float window_s) {
 void ViewerApp::request_first_view() {
     first_view_pending_ = true;
     shown_ = {effective_detail(), camera(), drawing_area().pixels.y};
+    // A software GL makes the buffers in this thread's heap: their pages are faulted in on the worker.
+    buffer_memory_.reset();
+    if (renderer_->software_gl())
+        buffer_memory_ = std::make_shared<app::HeapBlock>(render::MeshBuffers::landing_bytes(*model_->mesh));
     compute_.request_view({model_->mesh, model_->fields, model_->detail, nullptr, shown_.camera, shown_.height,
-                           shown_.detail, model_->facts});
+                           shown_.detail, model_->facts, buffer_memory_});
 }
 
 // A big model's first view from the worker, its upload prepared there: sent in slices over the
@@ -229,6 +233,7 @@ void ViewerApp::request_first_view() {
 void ViewerApp::show_first_view(BackgroundCompute::ViewResult::First& first, const render::Camera& camera,
                                 int height) {
     const auto t = std::chrono::steady_clock::now();
+    buffer_memory_.reset();  // freed for the buffers made now
     landing_ = std::make_unique<render::MeshBuffers>(first.fields.mesh, std::move(first.buffers),
                                                      render::MeshBuffers::InSlices{});
     landing_view_ = {shown_.detail, camera, height};
@@ -308,7 +313,7 @@ void ViewerApp::request_view_fields() {
         shown_ = {0, now, height};
         return;
     }
-    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail, {}});
+    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail, {}, nullptr});
 }
 
 // New fields reach the GPU in slices over several frames, each frame's

@@ -130,6 +130,8 @@ private:
     // A big model's first view on its way to the GPU (MeshBuffers::InSlices), for the view
     // it was made for; the renderer gets it once the last slice is sent.
     std::unique_ptr<render::MeshBuffers> landing_;
+    // A first view's buffer memory on a software GL, faulted in by the worker (app/heap_tuning.h).
+    std::shared_ptr<app::HeapBlock> buffer_memory_;
     ShownFields landing_view_;
     size_t landing_slices_ = 0, landing_frames_ = 0;  // the first model's, reported with the first frame
     float landing_longest_ms_ = 0;                    // the window thread's longest share of a frame

@@ -72,6 +72,10 @@ MeshBuffers::MeshBuffers(const Mesh& mesh, Prepared&& prepared, InSlices)
     pending_->first_landing = true;
 }
 
+size_t MeshBuffers::landing_bytes(const Mesh& mesh) {
+    return mesh.face_count() * sizeof(Face) + 2 * mesh.vertex_count() * (sizeof(GpuVertex) + sizeof(glm::vec3));
+}
+
 FaceClusters MeshBuffers::face_clusters_of(const Mesh& mesh, const VertexFaces* rows) {
     return cluster_faces(mesh, kClusterFaces, rows);
 }

@@ -74,6 +74,9 @@ public:
     // upload or update_fields first sends what is left (without the spare buffers).
     struct InSlices {};
     MeshBuffers(const Mesh& mesh, Prepared&& prepared, InSlices);
+    // The bytes of the GL buffers such a landing makes for the mesh (the spare ones included):
+    // host memory, on a software GL.
+    static size_t landing_bytes(const Mesh& mesh);
     ~MeshBuffers();
     // Replaces the fields (same mesh): vertex attributes, culling bounds,
     // colour-map ranges and hatching seeds. For fields at a new scale.
