@@ -28,8 +28,6 @@ public:
     HeapBlock(const HeapBlock&) = delete;
     HeapBlock& operator=(const HeapBlock&) = delete;
     void fault_in();
-    const void* data() const { return data_; }
-    size_t bytes() const { return bytes_; }
 
 private:
     void* data_;

@@ -313,7 +313,8 @@ void ViewerApp::request_view_fields() {
         shown_ = {0, now, height};
         return;
     }
-    compute_.request_view({model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail, {}, nullptr});
+    compute_.request_view(
+        {model_->mesh, model_->fields, model_->detail, face_clusters_, now, height, detail, {}, nullptr});
 }
 
 // New fields reach the GPU in slices over several frames, each frame's
