@@ -179,6 +179,7 @@ void ViewerApp::adopt_results() {
     // before, if any).
     first_view_pending_ = false;
     landing_.reset();
+    buffer_memory_.reset();  // a first view asked for before, if any, is not landing
     if (effective_detail() > 0 && model_->mesh->face_count() >= kFirstViewOnWorkerFaces) request_first_view();
     else show_model();
 }
