@@ -35,8 +35,9 @@ struct ModelSummary {
 // What the load learnt and made of a split mesh that building its GPU buffers would otherwise
 // find again (render::MeshFacts): its vertex-face rows (kept for the fields and the scale space
 // too), whether its normals point clearly outside after the turn of an inside-out mesh (unknown:
-// found when the buffers are built), and its face clusters (MeshBuffers::face_clusters_of, one
-// thread), made on a thread of their own from the load on, beside the fields.
+// found when the buffers are built), its face clusters (MeshBuffers::face_clusters_of, one
+// thread), made on a thread of their own from the load on, beside the fields, and its bounding
+// sphere (from the preparation's box).
 struct ModelFacts {
     std::shared_ptr<const VertexFaces> rows;
     std::optional<bool> outside_out;

@@ -22,10 +22,11 @@
 namespace kappa::render {
 
 // What a caller may already know of a mesh, so that building its buffers need not find it
-// again (app/mesh_drawing.cpp keeps the first two from its preparation and makes the clusters
-// while the fields are computed): its vertex-face rows (build_vertex_faces), whether its
-// normals point clearly outside (is_outside_out, geometry/mesh/orientation.h), and its
-// MeshBuffers::face_clusters_of, and its bounding_sphere. Unknown: found by MeshBuffers::layout_of.
+// again (app/mesh_drawing.cpp keeps the rows, the orientation and the bounds from its
+// preparation and makes the clusters while the fields are computed): its vertex-face rows
+// (build_vertex_faces), whether its normals point clearly outside (is_outside_out,
+// geometry/mesh/orientation.h), its MeshBuffers::face_clusters_of and its bounding_sphere.
+// Unknown: found by MeshBuffers::layout_of.
 struct MeshFacts {
     const VertexFaces* rows = nullptr;
     std::optional<bool> outside_out;
