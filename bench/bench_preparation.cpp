@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     const kappa::ResolvedCreases resolved = kappa::resolve_creases(mesh, vf, -1);
     const float angle = resolved.angle;
     const kappa::CreaseVote vote = kappa::sampled_crease_vote(mesh, vf);
-    const std::vector<uint32_t> candidates = kappa::crease_candidates(mesh, kappa::kAutoCreaseAngle);
+    const std::vector<uint32_t> candidates = kappa::crease_candidates(mesh, vf, kappa::kAutoCreaseAngle);
     std::printf("%s: %zu vertices, %zu faces, %u threads; auto crease angle %g (sampled vote: %s), %zu creases; "
                 "%zu crease candidates at %g degrees\n",
                 path.c_str(), mesh.vertex_count(), mesh.face_count(), kappa::thread_count(), angle,
@@ -56,8 +56,8 @@ int main(int argc, char** argv) {
     time_it("drawing units", runs, [&] { kappa::drawing_units(mesh); });
     time_it("vertex faces (adjacency)", runs, [&] { kappa::build_vertex_faces(mesh); });
     time_it("sampled crease vote", runs, [&] { kappa::sampled_crease_vote(mesh, vf); });
-    time_it("face pass: volumes", runs, [&] { kappa::survey_faces(mesh, 0); });
-    time_it("face pass: + candidates", runs, [&] { kappa::survey_faces(mesh, kappa::kAutoCreaseAngle); });
+    time_it("face pass: volumes", runs, [&] { kappa::survey_faces(mesh, vf, 0); });
+    time_it("face pass: + candidates", runs, [&] { kappa::survey_faces(mesh, vf, kappa::kAutoCreaseAngle); });
     time_it("creases around them", runs,
             [&] { kappa::creases_around(mesh, vf, kappa::kAutoCreaseAngle, candidates); });
     time_it("  whole edge pass (before)", runs, [&] { kappa::measure_edge_bends(mesh, vf, kappa::kAutoCreaseAngle); });

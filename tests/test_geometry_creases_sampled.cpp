@@ -155,7 +155,7 @@ void check_candidates(const Mesh& m, float angle) {
     INFO("angle " << angle);
     const VertexFaces vf = build_vertex_faces(m);
     const EdgeBends whole = measure_edge_bends(m, vf, angle);
-    const std::vector<uint32_t> candidates = crease_candidates(m, angle);
+    const std::vector<uint32_t> candidates = crease_candidates(m, vf, angle);
     for (const glm::uvec2& c : whole.creases) {
         CHECK(std::binary_search(candidates.begin(), candidates.end(), c.x));
         CHECK(std::binary_search(candidates.begin(), candidates.end(), c.y));
@@ -192,20 +192,21 @@ TEST_CASE("Creases: those found around the candidates are the whole pass's", "[c
     // Turned inside out, the candidates of the mesh as it was still hold (prepare_for_drawing turns it after the pass).
     Mesh turned = jittered;
     flip_faces(turned);
-    const std::vector<uint32_t> before = crease_candidates(jittered, 20);
+    const VertexFaces jittered_rows = build_vertex_faces(jittered);
+    const std::vector<uint32_t> before = crease_candidates(jittered, jittered_rows, 20);
     CHECK(creases_around(turned, build_vertex_faces(turned), 20, before) ==
           measure_edge_bends(turned, build_vertex_faces(turned), 20).creases);
-    // Whatever the thread count: the candidates may differ, the creases do not.
+    // Whatever the thread count: the same candidates, so the same creases.
     set_thread_count(1);
-    const std::vector<glm::uvec2> one = find_creases(jittered, 20);
+    const std::vector<uint32_t> one = crease_candidates(jittered, jittered_rows, 20);
     set_thread_count(0);
-    CHECK(find_creases(jittered, 20) == one);
+    CHECK(crease_candidates(jittered, jittered_rows, 20) == one);
 }
 
 TEST_CASE("Crease candidates: a direction lies within kPackAngleDeg of its packing, packed alike in lanes",
           "[creases]") {
-    // The candidates skip the angle test where a face packs as its corner's reference: sound only if
-    // every direction lies within kPackAngleDeg of its packing.
+    // The candidates compare packed directions: sound only if every direction lies within kPackAngleDeg
+    // of its packing.
     auto unpacked = [](uint32_t packed) {
         auto component = [&](int k) { return float(int32_t(packed << (27 - 5 * k)) >> 27); };
         return glm::vec3(component(0), component(1), component(2));
@@ -225,9 +226,9 @@ TEST_CASE("Crease candidates: a direction lies within kPackAngleDeg of its packi
         }
         const lanes::Lanes x{n[0].x, n[1].x, n[2].x, n[3].x}, y{n[0].y, n[1].y, n[2].y, n[3].y},
             z{n[0].z, n[1].z, n[2].z, n[3].z};
-        const lanes::Ints4 four = CreaseCandidates::pack_direction(x, y, z);
+        const lanes::Ints4 four = CreaseCandidateTest::pack_direction(x, y, z);
         for (int j = 0; j < 4; ++j) {
-            const uint32_t packed = CreaseCandidates::pack_direction(n[j].x, n[j].y, n[j].z);
+            const uint32_t packed = CreaseCandidateTest::pack_direction(n[j].x, n[j].y, n[j].z);
             REQUIRE(uint32_t(four[j]) == packed);
             const glm::vec3 r = unpacked(packed);
             const double cosine = glm::dot(glm::dvec3(n[j]), glm::dvec3(r)) /
@@ -235,13 +236,50 @@ TEST_CASE("Crease candidates: a direction lies within kPackAngleDeg of its packi
             widest = std::max(widest, std::acos(std::min(1.0, cosine)) * 180.0 / M_PI);
         }
     }
-    CHECK(widest <= CreaseCandidates::kPackAngleDeg);
+    CHECK(widest <= CreaseCandidateTest::kPackAngleDeg);
     CHECK(widest > 2.0);  // the bound is near what the packing gives
 }
 
-TEST_CASE("The pass over the faces: four faces at once give what one face at a time gives", "[creases]") {
-    // survey_faces takes four faces at a time: the same volumes and the same candidates (one thread, so
-    // that the references are taken in face order) as each face added alone.
+TEST_CASE("Crease candidates: a face the test keeps lies within the half angle of the reference",
+          "[creases]") {
+    // keeps(pack of n, r) must leave n within half the angle (less the margin for edge_bends' roundings)
+    // of r, whatever n and r: then no two faces kept by one r turn by the angle.
+    std::mt19937 rng(17);
+    std::normal_distribution<float> gauss;
+    for (const float angle : {kAutoCreaseAngle, 12.0f, 20.0f, 90.0f, 179.0f}) {
+        INFO("angle " << angle);
+        const CreaseCandidateTest test(angle);
+        REQUIRE(!test.everywhere());
+        const double half = 0.5 * std::acos(double(std::cos(angle * float(M_PI) / 180.0f)) + 4e-6) * 180.0 / M_PI;
+        double widest_kept = 0;
+        int kept = 0;
+        for (int i = 0; i < 200000; ++i) {
+            const glm::vec3 n(gauss(rng), gauss(rng), gauss(rng));
+            const glm::vec3 m = n + glm::vec3(gauss(rng), gauss(rng), gauss(rng)) * (0.01f * float(i % 50));
+            const int32_t r = CreaseCandidateTest::pack_direction(m.x, m.y, m.z);
+            const int32_t p = CreaseCandidateTest::pack_direction(n.x, n.y, n.z);
+            if (!test.keeps(p, r)) continue;
+            auto unpacked = [](uint32_t packed) {
+                auto component = [&](int k) { return double(int32_t(packed << (27 - 5 * k)) >> 27); };
+                return glm::dvec3(component(0), component(1), component(2));
+            };
+            const glm::dvec3 rd = unpacked(uint32_t(r));
+            const double cosine = glm::dot(glm::dvec3(n), rd) / (glm::length(glm::dvec3(n)) * glm::length(rd));
+            widest_kept = std::max(widest_kept, std::acos(std::min(1.0, cosine)) * 180.0 / M_PI);
+            ++kept;
+        }
+        CHECK(widest_kept <= half);
+        CHECK(widest_kept > half - 2 * CreaseCandidateTest::kPackAngleDeg);  // not far inside it either
+        CHECK(kept > 1000);
+    }
+    CHECK(CreaseCandidateTest(5.0f).everywhere());  // no room under twice kPackAngleDeg
+    CHECK(!CreaseCandidateTest(6.0f).everywhere());
+}
+
+TEST_CASE("The pass over the faces: its candidates are those of the rule taken vertex by vertex", "[creases]") {
+    // survey_faces takes four faces at a time in three passes; crease_candidates.h's rule, vertex by
+    // vertex: r is the pack of the first face in the vertex's row that is not left out, and the vertex is
+    // a candidate if a face in its row has no normal or a pack the test does not keep with r.
     Mesh fandisk = load_mesh(test::shared_mesh("fandisk.obj"));
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> jitter(-0.004f, 0.004f);
@@ -250,26 +288,46 @@ TEST_CASE("The pass over the faces: four faces at once give what one face at a t
     fandisk.faces.push_back({2, 3, 4});                          // a degenerate face below:
     fandisk.positions[4] = fandisk.positions[3];
     fandisk.faces.push_back({5, 6, uint32_t(fandisk.vertex_count())});  // a missing corner: left out
-    set_thread_count(1);
-    for (const float angle : {kAutoCreaseAngle, 5.0f, 20.0f}) {
+    const size_t nv = fandisk.vertex_count();
+    const VertexFaces vf = build_vertex_faces(fandisk);
+    for (const float angle : {kAutoCreaseAngle, 12.0f, 20.0f}) {
         INFO("angle " << angle);
-        const FaceSurvey survey = survey_faces(fandisk, angle);
-        CreaseCandidates one_by_one(fandisk.vertex_count(), angle);
-        for (const Face& f : fandisk.faces)
-            if (is_valid_face(f, fandisk.vertex_count())) one_by_one.add_face(f, face_cross(fandisk, f));
-        CHECK(survey.crease_candidates == one_by_one.vertices());
-        CHECK(std::binary_search(survey.crease_candidates.begin(), survey.crease_candidates.end(), 3u));
+        const CreaseCandidateTest test(angle);
+        std::vector<uint32_t> expected;
+        for (uint32_t v = 0; v < nv; ++v) {
+            int32_t r = -1;
+            bool candidate = false;
+            for (uint32_t i = vf.begin(v); i < vf.end(v); ++i) {
+                const Face& f = fandisk.faces[vf.corners[i] / 3];
+                if (!is_valid_face(f, nv)) continue;
+                const glm::vec3 c = face_cross(fandisk, f);
+                if (!(glm::dot(c, c) > 0)) {
+                    candidate = true;
+                    break;
+                }
+                const int32_t p = CreaseCandidateTest::pack_direction(c.x, c.y, c.z);
+                if (r < 0) r = p;
+                if (!test.keeps(p, r)) candidate = true;
+            }
+            if (candidate) expected.push_back(v);
+        }
+        const FaceSurvey survey = survey_faces(fandisk, vf, angle);
+        CHECK(survey.crease_candidates == expected);
+        CHECK(std::binary_search(expected.begin(), expected.end(), 3u));  // the degenerate face's corner
+        if (angle == kAutoCreaseAngle) CHECK(expected.size() < nv / 3);  // a shortcut, even on this noise
     }
-    set_thread_count(0);
+    CHECK(survey_faces(fandisk, vf, 5.0f).crease_candidates.size() == nv);  // no room: every vertex
 }
 
 TEST_CASE("The pass over the faces: volumes as the inside-out test sums them, whatever the thread count",
           "[creases][orientation]") {
     Mesh bunny = load_mesh(test::shared_mesh("bunny.ply"));
     set_thread_count(1);
-    const FaceSurvey one = survey_faces(bunny, kAutoCreaseAngle);
+    const VertexFaces rows = build_vertex_faces(bunny);
+    const FaceSurvey one = survey_faces(bunny, rows, kAutoCreaseAngle);
     set_thread_count(0);
-    const FaceSurvey many = survey_faces(bunny, kAutoCreaseAngle);
+    const FaceSurvey many = survey_faces(bunny, rows, kAutoCreaseAngle);
+    CHECK(one.crease_candidates == many.crease_candidates);
     CHECK(one.volumes.signed_sum == many.volumes.signed_sum);
     CHECK(one.volumes.unsigned_sum == many.volumes.unsigned_sum);
     // The serial sum of the same terms, within the rounding of a different order.
@@ -283,5 +341,5 @@ TEST_CASE("The pass over the faces: volumes as the inside-out test sums them, wh
     CHECK(many.volumes.unsigned_sum == Approx(unsigned_sum).epsilon(1e-12));
     CHECK(!is_inside_out(many.volumes));
     flip_faces(bunny);
-    CHECK(is_inside_out(survey_faces(bunny, 0).volumes));
+    CHECK(is_inside_out(survey_faces(bunny, rows, 0).volumes));
 }

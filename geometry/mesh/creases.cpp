@@ -28,7 +28,8 @@ std::vector<glm::uvec2> creases_around(const Mesh& mesh, const VertexFaces& vf, 
 
 std::vector<glm::uvec2> find_creases(const Mesh& mesh, float angle_deg) {
     if (!(angle_deg > 0)) return {};
-    return creases_around(mesh, build_vertex_faces(mesh), angle_deg, crease_candidates(mesh, angle_deg));
+    const VertexFaces vf = build_vertex_faces(mesh);
+    return creases_around(mesh, vf, angle_deg, crease_candidates(mesh, vf, angle_deg));
 }
 
 float auto_crease_angle(const Mesh& mesh) { return resolve_creases(mesh, build_vertex_faces(mesh), -1, false).angle; }
@@ -50,7 +51,7 @@ ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float s
     if (setting == 0) return out;
     if (const std::optional<float> angle = sampled_crease_angle(mesh, vf, setting)) {
         out.angle = *angle;
-        if (find) out.creases = creases_around(mesh, vf, out.angle, crease_candidates(mesh, out.angle));
+        if (find) out.creases = creases_around(mesh, vf, out.angle, crease_candidates(mesh, vf, out.angle));
         return out;
     }
     // Auto, and the sample cannot tell: every edge counts.

@@ -6,40 +6,58 @@
 
 #include "geometry/parallel/double_lanes.h"
 #include "geometry/parallel/parallel.h"
+#include "geometry/parallel/uninitialized_array.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
+#include <numeric>
 
 namespace kappa {
 
 namespace {
 
-// Four faces at once (lanes.h): their cross products (face_cross), volume terms (tetrahedron_volume6) and
-// packed directions (CreaseCandidates::pack_direction) in lanes, the same operations as one face's, so the
-// same bits; then each face's sums and corners in face order, as one at a time.
+using Test = CreaseCandidateTest;
+constexpr size_t kBlock = 65536;  // faces; block sums joined in order: independent of the thread count
+constexpr size_t kAhead = 64;     // faces (or vertices) whose data is fetched early: it lies all over memory
+
 struct FaceSums {
     double signed_sum = 0, unsigned_sum = 0;
     void add(double v) { signed_sum += v, unsigned_sum += std::fabs(v); }
 };
 
-void survey_one(const Mesh& mesh, size_t f, glm::dvec3 centroid, CreaseCandidates* candidates, FaceSums& sums) {
-    const size_t nv = mesh.vertex_count();
-    const Face& face = mesh.faces[f];
-    if (face[0] >= nv || face[1] >= nv || face[2] >= nv) return;  // no volume, no edges
-    const glm::vec3 cross = face_cross(mesh, face);  // one product for both
-    sums.add(tetrahedron_volume6(mesh.positions[face[0]], cross, centroid));
-    if (candidates && is_valid_face(face, nv)) candidates->add_face(face, cross);
+// Pass 1 (crease_candidates.h): each face's volume term (tetrahedron_volume6) and, where `packs` is
+// given, its packed direction, from one cross product (face_cross).
+uint16_t pack_of(const Face& face, glm::vec3 cross, size_t nv) {
+    if (!is_valid_face(face, nv)) return Test::kLeftOut;
+    // As face_normal: no normal where the float length is 0 or not finite (edge_bends.cpp gives such a
+    // face no angle).
+    const float length2 = glm::dot(cross, cross);
+    if (!(length2 > 0 && std::isfinite(length2))) return Test::kNoNormal;
+    return uint16_t(Test::pack_direction(cross.x, cross.y, cross.z));
 }
 
-void survey_four(const Mesh& mesh, size_t f, glm::dvec3 centroid, CreaseCandidates* candidates, FaceSums& sums) {
+void survey_one(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* packs, FaceSums& sums) {
+    const size_t nv = mesh.vertex_count();
+    const Face& face = mesh.faces[f];
+    if (face[0] >= nv || face[1] >= nv || face[2] >= nv) {  // no volume, no edges
+        if (packs) packs[f] = Test::kLeftOut;
+        return;
+    }
+    const glm::vec3 cross = face_cross(mesh, face);
+    sums.add(tetrahedron_volume6(mesh.positions[face[0]], cross, centroid));
+    if (packs) packs[f] = pack_of(face, cross, nv);
+}
+
+// Four faces at once (lanes.h): the same operations as one face's, so the same bits; each face's sums in
+// face order, as one at a time.
+void survey_four(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* packs, FaceSums& sums) {
     using lanes::Lanes, lanes::Doubles4;
     const Face* faces = &mesh.faces[f];
     const size_t nv = mesh.vertex_count();
     for (int j = 0; j < 4; ++j)
         if (faces[j][0] >= nv || faces[j][1] >= nv || faces[j][2] >= nv) {
-            for (int i = 0; i < 4; ++i) survey_one(mesh, f + i, centroid, candidates, sums);
+            for (int i = 0; i < 4; ++i) survey_one(mesh, f + i, centroid, packs, sums);
             return;
         }
     auto corner = [&](int k, int axis) {
@@ -55,61 +73,163 @@ void survey_four(const Mesh& mesh, size_t f, glm::dvec3 centroid, CreaseCandidat
         lanes::dot(lanes::Vec3<Doubles4>{wide(p0.x), wide(p0.y), wide(p0.z)} - apex,
                    lanes::Vec3<Doubles4>{wide(c.x), wide(c.y), wide(c.z)});
     for (int j = 0; j < 4; ++j) sums.add(std::isfinite(volume[j]) ? volume[j] : 0.0);
-    if (!candidates) return;
+    if (!packs) return;
     const Lanes length2 = lanes::dot(c, c);
     // Faces without a normal (length 0 or not finite) are packed as +x, to keep the pack's lanes finite.
     const lanes::Ints4 normal = (length2 > 0.0f) & (length2 <= std::numeric_limits<float>::max());
     const Lanes one = Lanes{} + 1.0f, zero = Lanes{};
-    const lanes::Ints4 packed = CreaseCandidates::pack_direction(normal ? c.x : one, normal ? c.y : zero,
-                                                                 normal ? c.z : zero);
+    const lanes::Ints4 packed = Test::pack_direction(normal ? c.x : one, normal ? c.y : zero, normal ? c.z : zero);
     for (int j = 0; j < 4; ++j)
-        if (is_valid_face(faces[j], nv))
-            candidates->add_face(faces[j], {c.x[j], c.y[j], c.z[j]}, length2[j], uint16_t(packed[j]));
+        packs[f + j] = !is_valid_face(faces[j], nv) ? Test::kLeftOut : normal[j] ? uint16_t(packed[j]) : Test::kNoNormal;
+}
+
+// Pass 2: each vertex's r, the pack of the first face in its row that is not left out (kLeftOut where
+// none is); a face without a normal there makes the vertex a candidate at once.
+UninitializedArray<uint16_t> references(const VertexFaces& vf, const uint16_t* packs, size_t nv) {
+    UninitializedArray<uint16_t> out(nv);
+    const uint32_t* offsets = vf.offsets.data();
+    const uint32_t* corners = vf.corners.data();
+    parallel_for_chunks(nv, [&](size_t first, size_t last) {
+        for (size_t v = first; v < last; ++v) {
+            if (v + kAhead < nv && offsets[v + kAhead] < offsets[v + kAhead + 1])
+                __builtin_prefetch(&packs[corners[offsets[v + kAhead]] / 3]);
+            uint16_t r = Test::kLeftOut;
+            for (uint32_t i = offsets[v]; i < offsets[v + 1]; ++i)
+                if (const uint16_t p = packs[corners[i] / 3]; p != Test::kLeftOut) {
+                    r = p == Test::kNoNormal ? Test::kCandidate : p;
+                    break;
+                }
+            out[v] = r;
+        }
+    });
+    return out;
+}
+
+// Pass 3: each face against its corners' r. Only kCandidate is ever stored, so the outcome does not
+// depend on the order in which threads meet the faces.
+class FaceTest {
+public:
+    FaceTest(const Mesh& mesh, const uint16_t* packs, uint16_t* references, const Test& test)
+        : mesh_(mesh), packs_(packs), references_(references), test_(test) {}
+
+    void one(size_t f) const {
+        const uint16_t pack = packs_[f];
+        if (pack == Test::kLeftOut) return;
+        const Face& face = mesh_.faces[f];
+        for (int k = 0; k < 3; ++k) {
+            const uint16_t r = load(face[k]);
+            if (r == Test::kCandidate) continue;
+            if (pack == Test::kNoNormal || !test_.keeps(int32_t(pack), int32_t(r)))
+                mark(face[k]);
+        }
+    }
+
+    void four(size_t f) const {
+        const uint16_t* p = &packs_[f];
+        if (!(p[0] & p[1] & p[2] & p[3] & 0x8000)) {  // some face left out or without a normal
+            for (int j = 0; j < 4; ++j) one(f + j);
+            return;
+        }
+        const Face* faces = &mesh_.faces[f];
+        const lanes::Ints4 pack{p[0], p[1], p[2], p[3]};
+        lanes::Ints4 moved{};  // bit k: corner k becomes a candidate
+        for (int k = 0; k < 3; ++k) {
+            auto r = [&](int j) { return load(faces[j][k]); };
+            const lanes::Ints4 rk{r(0), r(1), r(2), r(3)};
+            moved |= (rk != Test::kCandidate) & ~test_.keeps(pack, rk) & (1 << k);
+        }
+        if (__builtin_expect(moved[0] | moved[1] | moved[2] | moved[3], 0))
+            for (int j = 0; j < 4; ++j)
+                for (int k = 0; k < 3; ++k)
+                    if (moved[j] & (1 << k)) mark(faces[j][k]);
+    }
+
+    void prefetch(size_t f) const {
+        for (int k = 0; k < 3; ++k)
+            if (const uint32_t v = mesh_.faces[f][k]; v < mesh_.vertex_count()) __builtin_prefetch(&references_[v]);
+    }
+
+private:
+    // Relaxed atomic loads and stores (the references are written by other threads meanwhile).
+    uint16_t load(uint32_t v) const { return __atomic_load_n(&references_[v], __ATOMIC_RELAXED); }
+    void mark(uint32_t v) const { __atomic_store_n(&references_[v], Test::kCandidate, __ATOMIC_RELAXED); }
+
+    const Mesh& mesh_;
+    const uint16_t* packs_;
+    uint16_t* references_;
+    const Test& test_;
+};
+
+// The vertices marked kCandidate, in increasing order.
+std::vector<uint32_t> marked(const UninitializedArray<uint16_t>& references) {
+    const size_t nv = references.size(), blocks = (nv + kBlock - 1) / kBlock;
+    std::vector<std::vector<uint32_t>> found(blocks);
+    parallel_for_chunked(blocks, [&](size_t b) {
+        for (size_t v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v)
+            if (references[v] == Test::kCandidate) found[b].push_back(uint32_t(v));
+    }, 1);
+    std::vector<uint32_t> out;
+    for (const std::vector<uint32_t>& b : found) out.insert(out.end(), b.begin(), b.end());
+    return out;
+}
+
+// Calls body(first, last) for each block of faces, in parallel.
+template <typename Body> void for_face_blocks(size_t nf, Body&& body) {
+    parallel_for_chunked((nf + kBlock - 1) / kBlock, [&](size_t b) { body(b, b * kBlock, std::min(nf, (b + 1) * kBlock)); }, 1);
 }
 
 }  // namespace
 
-FaceSurvey survey_faces(const Mesh& mesh, float crease_angle_deg) {
+FaceSurvey survey_faces(const Mesh& mesh, const VertexFaces& vf, float crease_angle_deg) {
     FaceSurvey out;
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     if (nv == 0 || nf == 0) return out;
     const glm::dvec3 centroid = vertex_centroid(mesh);
-    std::optional<CreaseCandidates> candidates;
-    constexpr size_t kBlock = 65536;  // faces; block sums joined in order: independent of the thread count
-    constexpr size_t kAhead = 64;     // faces
+    const Test test(crease_angle_deg);
+    const bool candidates = crease_angle_deg > 0;
+    const bool packing = candidates && !test.everywhere();
+    UninitializedArray<uint16_t> packs(packing ? nf : 0);
+    uint16_t* const pack_out = packing ? packs.data() : nullptr;
+
     std::vector<EnclosedVolumes> partial((nf + kBlock - 1) / kBlock);
-    if (crease_angle_deg > 0) candidates.emplace(nv, crease_angle_deg);
-    CreaseCandidates* const cc = candidates ? &*candidates : nullptr;
-    parallel_for_chunks(
-        partial.size(),
-        [&](size_t first, size_t last) {
-            for (size_t b = first; b < last; ++b) {
-                FaceSums sums;
-                const size_t begin = b * kBlock, end = std::min(nf, (b + 1) * kBlock);
-                size_t f = begin;
-                for (; f + 4 <= end; f += 4) {
-                    // The corners of faces some way ahead, fetched early: they lie all over memory.
-                    for (size_t g = f + kAhead; g < std::min(end, f + kAhead + 4); ++g)
-                        for (int k = 0; k < 3; ++k)
-                            if (const uint32_t v = mesh.faces[g][k]; v < nv) {
-                                __builtin_prefetch(&mesh.positions[v]);
-                                if (cc) cc->prefetch(v);
-                            }
-                    survey_four(mesh, f, centroid, cc, sums);
-                }
-                for (; f < end; ++f) survey_one(mesh, f, centroid, cc, sums);
-                partial[b] = {sums.signed_sum, sums.unsigned_sum};
-            }
-        },
-        1);
+    for_face_blocks(nf, [&](size_t b, size_t begin, size_t end) {
+        FaceSums sums;
+        size_t f = begin;
+        for (; f + 4 <= end; f += 4) {
+            // The corners of faces some way ahead, fetched early.
+            for (size_t g = f + kAhead; g < std::min(end, f + kAhead + 4); ++g)
+                for (int k = 0; k < 3; ++k)
+                    if (const uint32_t v = mesh.faces[g][k]; v < nv) __builtin_prefetch(&mesh.positions[v]);
+            survey_four(mesh, f, centroid, pack_out, sums);
+        }
+        for (; f < end; ++f) survey_one(mesh, f, centroid, pack_out, sums);
+        partial[b] = {sums.signed_sum, sums.unsigned_sum};
+    });
     for (const EnclosedVolumes& p : partial)
         out.volumes.signed_sum += p.signed_sum, out.volumes.unsigned_sum += p.unsigned_sum;
-    if (candidates) out.crease_candidates = candidates->vertices();
+    if (!candidates) return out;
+    if (!packing) {
+        out.crease_candidates.resize(nv);
+        std::iota(out.crease_candidates.begin(), out.crease_candidates.end(), 0u);
+        return out;
+    }
+
+    UninitializedArray<uint16_t> refs = references(vf, packs.data(), nv);
+    const FaceTest faces(mesh, packs.data(), refs.data(), test);
+    for_face_blocks(nf, [&](size_t, size_t begin, size_t end) {
+        size_t f = begin;
+        for (; f + 4 <= end; f += 4) {
+            for (size_t g = f + kAhead; g < std::min(end, f + kAhead + 4); ++g) faces.prefetch(g);
+            faces.four(f);
+        }
+        for (; f < end; ++f) faces.one(f);
+    });
+    out.crease_candidates = marked(refs);
     return out;
 }
 
-std::vector<uint32_t> crease_candidates(const Mesh& mesh, float angle_deg) {
-    return survey_faces(mesh, angle_deg).crease_candidates;
+std::vector<uint32_t> crease_candidates(const Mesh& mesh, const VertexFaces& vf, float angle_deg) {
+    return survey_faces(mesh, vf, angle_deg).crease_candidates;
 }
 
 }  // namespace kappa

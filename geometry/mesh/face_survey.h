@@ -1,6 +1,6 @@
-// What preparing a mesh for drawing asks of every face, in one parallel pass
-// over the faces (on big meshes their corners' positions are read from all
-// over memory, and each pass costs about as much as reading the file): the
+// What preparing a mesh for drawing asks of every face, in passes that read
+// each face's corners' positions once (on big meshes they lie all over memory,
+// and one pass over them costs about as much as reading the file): the
 // volumes that tell an inside-out mesh (orientation.h) and, for a crease angle
 // above 0, the vertices where an edge may turn by more than it
 // (crease_candidates.h).
@@ -8,6 +8,7 @@
 
 #include "mesh.h"
 #include "orientation.h"
+#include "vertex_faces.h"
 
 #include <cstdint>
 #include <vector>
@@ -19,8 +20,9 @@ struct FaceSurvey {
     std::vector<uint32_t> crease_candidates;  // increasing; empty when the angle is 0
 };
 
-FaceSurvey survey_faces(const Mesh& mesh, float crease_angle_deg);
-// The crease candidates alone (the same pass).
-std::vector<uint32_t> crease_candidates(const Mesh& mesh, float angle_deg);
+// vf: the mesh's rows (build_vertex_faces); read only for a crease angle above 0.
+FaceSurvey survey_faces(const Mesh& mesh, const VertexFaces& vf, float crease_angle_deg);
+// The crease candidates alone (the same passes).
+std::vector<uint32_t> crease_candidates(const Mesh& mesh, const VertexFaces& vf, float angle_deg);
 
 }  // namespace kappa
