@@ -1,11 +1,15 @@
 // The parallel loops every pass is built on: each index once, whatever the
 // thread count and the split.
 #include "geometry/parallel/parallel.h"
+#include "geometry/parallel/shift_down.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
+#include <cstring>
+#include <numeric>
 #include <vector>
 
 using namespace kappa;
@@ -52,6 +56,28 @@ TEST_CASE("parallel loops visit every index exactly once", "[parallel]") {
             CHECK(std::count(ranges.begin(), ranges.end(), 1) == std::ptrdiff_t(n));
             const auto chunked = visits(n, [&](auto visit) { parallel_for_chunked(n, visit, 100); });
             CHECK(std::count(chunked.begin(), chunked.end(), 1) == std::ptrdiff_t(n));
+        }
+    }
+    set_thread_count(0);
+}
+
+TEST_CASE("shift_down moves a stretch as memmove does, whatever the thread count", "[parallel]") {
+    // Long enough for several chunks (a chunk is 2^20 elements), and shifts of one, a few and more than a
+    // chunk's worth of places; a stretch that ends in a chunk shorter than the shift too.
+    const size_t n = (size_t(1) << 22) + 12345;
+    for (unsigned threads : {1u, 2u, 5u}) {
+        set_thread_count(threads);
+        for (const size_t by : {size_t(1), size_t(7), size_t(1000), (size_t(1) << 20) + 3}) {
+            for (const size_t end : {n, n - 5, size_t(3) << 20}) {
+                INFO("threads " << threads << ", by " << by << ", end " << end);
+                const size_t begin = by + 11;
+                std::vector<uint32_t> data(n), expected(n);
+                std::iota(data.begin(), data.end(), 0u);
+                expected = data;
+                std::memmove(expected.data() + begin - by, expected.data() + begin, (end - begin) * 4);
+                shift_down(data.data(), begin, end, by);
+                CHECK(data == expected);
+            }
         }
     }
     set_thread_count(0);

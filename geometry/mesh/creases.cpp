@@ -9,6 +9,7 @@
 
 #include "geometry/io/prefault.h"
 #include "geometry/parallel/parallel.h"
+#include "geometry/parallel/shift_down.h"
 
 #include <glm/geometric.hpp>
 
@@ -63,10 +64,14 @@ ResolvedCreases resolve_creases(const Mesh& mesh, const VertexFaces& vf, float s
 
 namespace {
 
-// The corners at the marked vertices as (vertex << 32 | corner), sorted: each
-// vertex's corners in face order, as in its row of vertex_faces.h. One pass
-// over the faces, in blocks whose results are joined in order.
-std::vector<uint64_t> corners_at(const Mesh& mesh, const std::vector<uint8_t>& marked) {
+// The corners at the given vertices (sorted) as (vertex << 32 | corner),
+// sorted: each vertex's corners in face order, as in its row of
+// vertex_faces.h. One pass over the faces, in blocks whose results are joined
+// in order.
+std::vector<uint64_t> corners_at(const Mesh& mesh, const std::vector<uint32_t>& vertices) {
+    std::vector<uint8_t> marked(mesh.vertex_count() + 1, 0);  // + 1: corners past the last vertex
+    for (const uint32_t v : vertices) marked[v] = 1;
+    auto is_marked = [&](uint32_t v) { return marked[std::min<size_t>(v, mesh.vertex_count())] != 0; };
     constexpr size_t kBlock = 65536;
     const size_t nf = mesh.face_count(), blocks = (nf + kBlock - 1) / kBlock;
     std::vector<std::vector<uint64_t>> found(blocks);
@@ -76,7 +81,7 @@ std::vector<uint64_t> corners_at(const Mesh& mesh, const std::vector<uint8_t>& m
             for (size_t b = first; b < last; ++b)
                 for (size_t f = b * kBlock; f < std::min(nf, (b + 1) * kBlock); ++f)
                     for (uint32_t i = 0; i < 3; ++i)
-                        if (marked[mesh.faces[f][i]]) found[b].push_back(uint64_t(mesh.faces[f][i]) << 32 | (3 * f + i));
+                        if (is_marked(mesh.faces[f][i])) found[b].push_back(uint64_t(mesh.faces[f][i]) << 32 | (3 * f + i));
         },
         1);
     std::vector<uint64_t> all;
@@ -107,8 +112,10 @@ void move_corners(VertexFaces& vf, std::vector<std::pair<uint32_t, uint32_t>> mo
     auto shift_rows = [&](size_t first, size_t last) {  // [first, last): untouched rows
         if (lost == 0 || first >= last) return;
         const uint32_t begin = vf.offsets[first], end = vf.offsets[last];
-        std::memmove(vf.corners.data() + begin - lost, vf.corners.data() + begin, size_t(end - begin) * 4);
-        for (size_t v = first; v < last; ++v) vf.offsets[v] -= lost;
+        shift_down(vf.corners.data(), begin, end, lost);
+        parallel_for_chunks(last - first, [&](size_t a, size_t b) {
+            for (size_t v = first + a; v < first + b; ++v) vf.offsets[v] -= lost;
+        }, size_t(1) << 20);
     };
     size_t next_row = losing.front();
     for (const uint32_t v : losing) {
@@ -137,11 +144,10 @@ void move_corners(VertexFaces& vf, std::vector<std::pair<uint32_t, uint32_t>> mo
 }
 
 // As corners_at, from the vertex-face rows.
-std::vector<uint64_t> crease_corners(const VertexFaces& vf, const std::vector<uint8_t>& marked) {
+std::vector<uint64_t> crease_corners(const VertexFaces& vf, const std::vector<uint32_t>& vertices) {
     std::vector<uint64_t> all;
-    for (size_t v = 0; v < marked.size(); ++v)
-        if (marked[v])
-            for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) all.push_back(uint64_t(v) << 32 | vf.corners[k]);
+    for (const uint32_t v : vertices)
+        for (uint32_t k = vf.begin(v); k < vf.end(v); ++k) all.push_back(uint64_t(v) << 32 | vf.corners[k]);
     return all;
 }
 
@@ -166,9 +172,10 @@ SplitMesh split_at_creases(Mesh mesh, const std::vector<glm::uvec2>& creases, Ve
         const uint64_t key = uint64_t(std::min(a, b)) << 32 | std::max(a, b);
         return std::binary_search(crease_keys.begin(), crease_keys.end(), key);
     };
-    std::vector<uint8_t> on_crease(nv, 0);
-    for (const auto& c : creases)
-        if (c.x < nv && c.y < nv) on_crease[c.x] = on_crease[c.y] = 1;
+    std::vector<uint32_t> on_crease;  // the creases' vertices, sorted
+    for (const uint64_t key : crease_keys) on_crease.push_back(uint32_t(key >> 32)), on_crease.push_back(uint32_t(key));
+    std::sort(on_crease.begin(), on_crease.end());
+    on_crease.erase(std::unique(on_crease.begin(), on_crease.end()), on_crease.end());
 
     // Around each crease vertex: faces joined across its non-crease edges.
     // The faces are read as they came in; the new corner numbers are kept
