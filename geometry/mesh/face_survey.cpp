@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
@@ -79,8 +80,14 @@ void survey_four(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* pack
     const lanes::Ints4 normal = (length2 > 0.0f) & (length2 <= std::numeric_limits<float>::max());
     const Lanes one = Lanes{} + 1.0f, zero = Lanes{};
     const lanes::Ints4 packed = Test::pack_direction(normal ? c.x : one, normal ? c.y : zero, normal ? c.z : zero);
-    for (int j = 0; j < 4; ++j)
-        packs[f + j] = !is_valid_face(faces[j], nv) ? Test::kLeftOut : normal[j] ? uint16_t(packed[j]) : Test::kNoNormal;
+    // is_valid_face, lane by lane (every corner is a vertex here): no repeated corner.
+    auto index = [&](int k) { return lanes::Ints4{int32_t(faces[0][k]), int32_t(faces[1][k]), int32_t(faces[2][k]), int32_t(faces[3][k])}; };
+    const lanes::Ints4 i0 = index(0), i1 = index(1), i2 = index(2);
+    const lanes::Ints4 valid = (i0 != i1) & (i1 != i2) & (i0 != i2);
+    const lanes::Ints4 out = valid ? (normal ? packed : Test::kNoNormal) : Test::kLeftOut;
+    using Shorts4 = uint16_t __attribute__((vector_size(8)));
+    const Shorts4 narrow = __builtin_convertvector(out, Shorts4);
+    std::memcpy(&packs[f], &narrow, sizeof narrow);
 }
 
 // Pass 2: each vertex's r, the pack of the first face in its row that is not left out (kLeftOut where
