@@ -81,7 +81,8 @@ std::vector<uint64_t> corners_at(const Mesh& mesh, const std::vector<uint32_t>& 
             for (size_t b = first; b < last; ++b)
                 for (size_t f = b * kBlock; f < std::min(nf, (b + 1) * kBlock); ++f)
                     for (uint32_t i = 0; i < 3; ++i)
-                        if (is_marked(mesh.faces[f][i])) found[b].push_back(uint64_t(mesh.faces[f][i]) << 32 | (3 * f + i));
+                        if (const uint32_t v = mesh.faces[f][i]; is_marked(v))
+                            found[b].push_back(uint64_t(v) << 32 | (3 * f + i));
         },
         1);
     std::vector<uint64_t> all;

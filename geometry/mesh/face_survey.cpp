@@ -81,7 +81,9 @@ void survey_four(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* pack
     const Lanes one = Lanes{} + 1.0f, zero = Lanes{};
     const lanes::Ints4 packed = Test::pack_direction(normal ? c.x : one, normal ? c.y : zero, normal ? c.z : zero);
     // is_valid_face, lane by lane (every corner is a vertex here): no repeated corner.
-    auto index = [&](int k) { return lanes::Ints4{int32_t(faces[0][k]), int32_t(faces[1][k]), int32_t(faces[2][k]), int32_t(faces[3][k])}; };
+    auto index = [&](int k) {
+        return lanes::Ints4{int32_t(faces[0][k]), int32_t(faces[1][k]), int32_t(faces[2][k]), int32_t(faces[3][k])};
+    };
     const lanes::Ints4 i0 = index(0), i1 = index(1), i2 = index(2);
     const lanes::Ints4 valid = (i0 != i1) & (i1 != i2) & (i0 != i2);
     const lanes::Ints4 out = valid ? (normal ? packed : Test::kNoNormal) : Test::kLeftOut;
@@ -180,9 +182,10 @@ std::vector<uint32_t> marked(const UninitializedArray<uint16_t>& references) {
     return out;
 }
 
-// Calls body(first, last) for each block of faces, in parallel.
+// Calls body(block, first face, end) for each block of faces, in parallel.
 template <typename Body> void for_face_blocks(size_t nf, Body&& body) {
-    parallel_for_chunked((nf + kBlock - 1) / kBlock, [&](size_t b) { body(b, b * kBlock, std::min(nf, (b + 1) * kBlock)); }, 1);
+    const size_t blocks = (nf + kBlock - 1) / kBlock;
+    parallel_for_chunked(blocks, [&](size_t b) { body(b, b * kBlock, std::min(nf, (b + 1) * kBlock)); }, 1);
 }
 
 }  // namespace
