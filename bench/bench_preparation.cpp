@@ -1,7 +1,7 @@
 // What drawing a mesh does between reading it and its fields (`kappa render`'s
 // "load" less the read, app/mesh_drawing.cpp and app/mesh_source.cpp), and the
 // default view it then takes (app/render_options.cpp, make_camera): drawing
-// units, the crease angle (auto: a sampled vote), one pass over the faces
+// units, the crease angle (auto: a sampled vote), the passes over the faces
 // (the inside-out volumes and the crease candidates), the creases around the
 // candidates, the split along them, the bounding sphere. Each stage timed
 // alone on the loaded mesh, then all of them as MeshDrawing runs them (the
