@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
     time_it("mesh copy", runs, [&] { kappa::Mesh copy = mesh; });
     time_it("copy + split (rows given)", runs, [&] {
         kappa::VertexFaces rows = vf;
+        rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);
         kappa::split_at_creases(mesh, resolved.creases, &rows);
     });
     time_it("  rows copy", runs, [&] { kappa::VertexFaces rows = vf; });
@@ -76,6 +77,7 @@ int main(int argc, char** argv) {
                     split = {};
                     m.positions.reserve(kappa::positions_room(mesh.vertex_count()));  // as a reader leaves it
                     m.positions = mesh.positions, m.faces = mesh.faces, rows = vf;
+                    rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);  // as built
                 });
     }
     time_it("default view (rows given)", runs, [&] { kappa::default_view_as_read(mesh, std::nullopt, false, &vf); });
@@ -88,6 +90,7 @@ int main(int argc, char** argv) {
         m.positions.reserve(kappa::positions_room(mesh.vertex_count()));  // as a reader leaves it
         m.positions = mesh.positions, m.faces = mesh.faces;
         kappa::VertexFaces rows = vf;
+        rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);  // as build_vertex_faces leaves it
         const kappa::app::DrawingPreparation prepared = kappa::app::prepare_for_drawing(m, rows, -1);  // auto
         const kappa::SplitMesh split = kappa::split_at_creases(std::move(m), prepared.creases.creases, &rows);
         kappa::render::bounding_sphere(split.mesh, prepared.box);
@@ -97,6 +100,7 @@ int main(int argc, char** argv) {
         m.positions.reserve(kappa::positions_room(mesh.vertex_count()));
         m.positions = mesh.positions, m.faces = mesh.faces;
         kappa::VertexFaces rows = vf;
+        rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);
     });
     return 0;
 }

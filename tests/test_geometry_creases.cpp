@@ -4,6 +4,7 @@
 #include "test_support.h"
 
 #include "geometry/mesh/creases.h"
+#include "geometry/mesh/vertex_faces.h"
 #include "geometry/io/mesh_io.h"
 #include "geometry/mesh/primitives.h"
 
@@ -68,6 +69,26 @@ TEST_CASE("Creases: the automatic default finds CAD edges and leaves smooth and 
         CHECK(auto_crease_angle(load_mesh(test::shared_mesh(name))) == 0.0f);
     }
     CHECK(auto_crease_angle(make_icosphere(1, 4)) == 0.0f);
+}
+
+TEST_CASE("Creases: a split within the room a reader and the rows leave moves no array", "[creases]") {
+    // Readers reserve positions_room for the positions and build_vertex_faces as much for the row starts:
+    // the copies a split appends fit, and neither array of a big mesh is copied whole.
+    Mesh cube = test::unit_cube();
+    cube.positions.reserve(positions_room(cube.vertex_count()));
+    const std::vector<glm::uvec2> creases = find_creases(cube, 40);
+    VertexFaces rows = build_vertex_faces(cube);
+    const glm::vec3* positions = cube.positions.data();
+    const uint32_t* offsets = rows.offsets.data();
+    const uint32_t* corners = rows.corners.data();
+    const SplitMesh s = split_at_creases(std::move(cube), creases, &rows);
+    REQUIRE(s.copied_from.size() == 16);
+    CHECK(s.mesh.positions.data() == positions);
+    CHECK(rows.offsets.data() == offsets);
+    CHECK(rows.corners.data() == corners);
+    const VertexFaces rebuilt = build_vertex_faces(s.mesh);  // the rows are the split mesh's
+    CHECK(rows.offsets == rebuilt.offsets);
+    CHECK(rows.corners == rebuilt.corners);
 }
 
 TEST_CASE("Creases: the split gives each side of a crease its own vertices", "[creases]") {
