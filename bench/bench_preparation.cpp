@@ -62,9 +62,13 @@ int main(int argc, char** argv) {
             [&] { kappa::creases_around(mesh, vf, kappa::kAutoCreaseAngle, candidates); });
     time_it("  whole edge pass (before)", runs, [&] { kappa::measure_edge_bends(mesh, vf, kappa::kAutoCreaseAngle); });
     time_it("mesh copy", runs, [&] { kappa::Mesh copy = mesh; });
-    time_it("copy + split (rows given)", runs, [&] {
+    auto rows_as_built = [&] {  // a copy of the rows with the room build_vertex_faces leaves
         kappa::VertexFaces rows = vf;
-        rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);
+        rows.offsets.reserve(kappa::row_starts_room(mesh.vertex_count()));
+        return rows;
+    };
+    time_it("copy + split (rows given)", runs, [&] {
+        kappa::VertexFaces rows = rows_as_built();
         kappa::split_at_creases(mesh, resolved.creases, &rows);
     });
     time_it("  rows copy", runs, [&] { kappa::VertexFaces rows = vf; });
@@ -76,8 +80,7 @@ int main(int argc, char** argv) {
                 [&] { split = kappa::split_at_creases(std::move(m), resolved.creases, &rows); }, 24, [&] {
                     split = {};
                     m.positions.reserve(kappa::positions_room(mesh.vertex_count()));  // as a reader leaves it
-                    m.positions = mesh.positions, m.faces = mesh.faces, rows = vf;
-                    rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);  // as built
+                    m.positions = mesh.positions, m.faces = mesh.faces, rows = rows_as_built();
                 });
     }
     time_it("default view (rows given)", runs, [&] { kappa::default_view_as_read(mesh, std::nullopt, false, &vf); });
@@ -89,8 +92,7 @@ int main(int argc, char** argv) {
         kappa::Mesh m;
         m.positions.reserve(kappa::positions_room(mesh.vertex_count()));  // as a reader leaves it
         m.positions = mesh.positions, m.faces = mesh.faces;
-        kappa::VertexFaces rows = vf;
-        rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);  // as build_vertex_faces leaves it
+        kappa::VertexFaces rows = rows_as_built();
         const kappa::app::DrawingPreparation prepared = kappa::app::prepare_for_drawing(m, rows, -1);  // auto
         const kappa::SplitMesh split = kappa::split_at_creases(std::move(m), prepared.creases.creases, &rows);
         kappa::render::bounding_sphere(split.mesh, prepared.box);
@@ -99,8 +101,7 @@ int main(int argc, char** argv) {
         kappa::Mesh m;
         m.positions.reserve(kappa::positions_room(mesh.vertex_count()));
         m.positions = mesh.positions, m.faces = mesh.faces;
-        kappa::VertexFaces rows = vf;
-        rows.offsets.reserve(kappa::positions_room(mesh.vertex_count()) + 1);
+        kappa::VertexFaces rows = rows_as_built();
     });
     return 0;
 }

@@ -33,7 +33,9 @@ glm::dvec3 vertex_centroid(const Mesh& mesh) {
     return sum / double(n);
 }
 
-EnclosedVolumes enclosed_volumes(const Mesh& mesh) { return survey_faces(mesh, VertexFaces{}, 0).volumes; }  // no rows read at 0
+EnclosedVolumes enclosed_volumes(const Mesh& mesh) {
+    return survey_faces(mesh, VertexFaces{}, 0).volumes;  // at angle 0 no rows are read
+}
 
 bool is_inside_out(const EnclosedVolumes& v) { return v.unsigned_sum > 0 && v.signed_sum < -0.5 * v.unsigned_sum; }
 

@@ -19,7 +19,13 @@ struct VertexFaces {
     uint32_t degree(size_t v) const { return offsets[v + 1] - offsets[v]; }
 };
 
-// Counting sort over the face corners: O(V + F).
+// Counting sort over the face corners: O(V + F). The row starts have room
+// for row_starts_room(V) entries.
 VertexFaces build_vertex_faces(const Mesh& mesh);
+
+// The row starts' room for V vertices: V + 1 and the rows of the vertex copies
+// a split appends (split_at_creases, creases.h), as positions_room leaves for
+// their positions; else the split moves the whole array (30 ms on 17.8M faces).
+inline size_t row_starts_room(size_t vertex_count) { return positions_room(vertex_count) + 1; }
 
 }  // namespace kappa
