@@ -1,26 +1,64 @@
 #include "position_bounds.h"
 
+#include "geometry/parallel/lanes.h"
 #include "geometry/parallel/parallel.h"
 
 #include <glm/common.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace kappa {
 
+namespace {
+
+using lanes::Lanes;
+
+// Bounds of points [first, last) one at a time, leaving out those with a non-finite coordinate.
+void add_points(PositionBounds& out, const glm::vec3* p, size_t first, size_t last) {
+    for (size_t v = first; v < last; ++v)
+        if (std::isfinite(p[v].x) && std::isfinite(p[v].y) && std::isfinite(p[v].z))
+            out.lo = glm::min(out.lo, p[v]), out.hi = glm::max(out.hi, p[v]);
+}
+
+// The same for [first, first + 4 * groups), four points (twelve floats, three lanes) at a time: lane j of
+// the k-th lanes holds coordinate (4 k + j) % 3. False, with `out` unchanged, where some coordinate is not
+// finite (x - x is then NaN, and NaN stays in a sum).
+bool add_groups(PositionBounds& out, const glm::vec3* p, size_t first, size_t groups) {
+    const float* f = &p[first].x;
+    Lanes lo[3], hi[3], nonfinite{};
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 4; ++j) lo[k][j] = out.lo[(4 * k + j) % 3], hi[k][j] = out.hi[(4 * k + j) % 3];
+    for (size_t g = 0; g < groups; ++g, f += 12)
+        for (int k = 0; k < 3; ++k) {
+            Lanes x;
+            std::memcpy(&x, f + 4 * k, sizeof x);
+            nonfinite += x - x;
+            lo[k] = x < lo[k] ? x : lo[k], hi[k] = hi[k] < x ? x : hi[k];
+        }
+    if (!(nonfinite[0] == 0 && nonfinite[1] == 0 && nonfinite[2] == 0 && nonfinite[3] == 0)) return false;
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 4; ++j) {
+            const int axis = (4 * k + j) % 3;
+            out.lo[axis] = std::min(out.lo[axis], lo[k][j]), out.hi[axis] = std::max(out.hi[axis], hi[k][j]);
+        }
+    return true;
+}
+
+}  // namespace
+
 PositionBounds position_bounds(const std::vector<glm::vec3>& positions) {
-    constexpr size_t kBlock = 65536;
+    constexpr size_t kBlock = 65536;  // a multiple of 4
     const size_t n = positions.size();
     std::vector<PositionBounds> blocks((n + kBlock - 1) / kBlock);
     parallel_for_chunked(
         blocks.size(),
         [&](size_t b) {
-            PositionBounds out;  // in registers: stored through a reference, every step waited on the last
-            for (size_t v = b * kBlock; v < std::min(n, (b + 1) * kBlock); ++v) {
-                const glm::vec3 p = positions[v];
-                if (std::isfinite(p.x + p.y + p.z)) out.lo = glm::min(out.lo, p), out.hi = glm::max(out.hi, p);
-            }
+            const size_t first = b * kBlock, last = std::min(n, first + kBlock), groups = (last - first) / 4;
+            PositionBounds out;
+            if (!add_groups(out, positions.data(), first, groups)) add_points(out, positions.data(), first, first + 4 * groups);
+            add_points(out, positions.data(), first + 4 * groups, last);
             blocks[b] = out;
         },
         1);

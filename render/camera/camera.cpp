@@ -27,9 +27,8 @@ BoundingSphere bounding_sphere(const Mesh& mesh, const PositionBounds& box) {
         parallel_for_chunked(blocks, [&](size_t b) { body(b, b * kBlock, std::min(n, (b + 1) * kBlock)); }, 1);
     };
     if (box.empty()) return {};
-    const glm::vec3 lo = box.lo, hi = box.hi;
     BoundingSphere s;
-    s.center = glm::vec3(0.5 * (glm::dvec3(lo) + glm::dvec3(hi)));
+    s.center = box.center();
     std::vector<double> r2(blocks, 0.0);  // in double: squares of coordinates near 1e20 overflow float
     each_block([&](size_t b, size_t first, size_t last) {
         for (size_t v = first; v < last; ++v) {
