@@ -22,7 +22,7 @@ DrawingPreparation prepare_for_drawing(Mesh& mesh, VertexFaces& vf, float crease
     // The angle first (a sample of the edges tells it on most meshes): the pass over the faces then
     // finds the crease candidates at it along with the volumes.
     const std::optional<float> angle = sampled_crease_angle(mesh, vf, crease_setting);
-    const FaceSurvey survey = survey_faces(mesh, vf, angle.value_or(0.0f));
+    const FaceSurvey survey = survey_faces(mesh, vf, angle.value_or(0.0f), p.box.center());
     p.turned_inside_out = is_inside_out(survey.volumes);
     // Turned round, every normal turns with the others: the bends, and so the candidates, stay.
     if (p.turned_inside_out) flip_faces(mesh, &vf);

@@ -37,26 +37,21 @@ public:
     // No room left under the angle: every vertex is a candidate.
     bool everywhere() const { return everywhere_; }
 
-    // A direction packed in 16 bits: three signed 5-bit components, round(15 n / max |n_k|), under a set
-    // bit 15. The largest component is +-15 to within float roundings and the other two within 0.5 of
-    // 15 n / max |n_k|, so a direction lies within asin(0.7072 / 14.999), 2.71 degrees, of its packing:
-    // kPackAngleDeg rounds that up.
+    // A direction packed in 16 bits: three signed 5-bit components, 15 n / max |n_k| rounded to nearest
+    // (lanes::nearest), under a set bit 15. The largest component is +-15 to within float roundings and the
+    // other two within 0.5 of 15 n / max |n_k|, so a direction lies within asin(0.7072 / 14.999), 2.71
+    // degrees, of its packing: kPackAngleDeg rounds that up.
     static constexpr double kPackAngleDeg = 2.75;
     // Values without bit 15: a face left out (repeated or missing corners) or a vertex with no face;
     // a face without a normal (degenerate); a vertex that is a candidate.
     static constexpr uint16_t kLeftOut = 0, kNoNormal = 1, kCandidate = 2;
 
     // For a float or four lanes (lanes.h): the same operations lane by lane, so the same bits. Not for a
-    // zero or non-finite direction.
+    // zero or non-finite direction (four lanes give some value there, a float is not to be asked).
     template <typename F> static auto pack_direction(F x, F y, F z) {
         using lanes::larger, lanes::magnitude;
         const F scale = 15.0f / larger(magnitude(x), larger(magnitude(y), magnitude(z)));
-        auto rounded = [&](F c) {  // half away from zero, in 5 bits
-            const F t = c * scale;
-            const F away = t >= 0.0f ? t + 0.5f : t - 0.5f;
-            if constexpr (std::is_same_v<F, float>) return uint32_t(int32_t(away)) & 31u;
-            else return __builtin_convertvector(away, lanes::Ints4) & 31;
-        };
+        auto rounded = [&](F c) { return lanes::nearest(c * scale) & 31; };  // in 5 bits
         return (1 << 15) | rounded(x) | rounded(y) << 5 | rounded(z) << 10;
     }
 

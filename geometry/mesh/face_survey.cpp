@@ -23,13 +23,25 @@ using Test = CreaseCandidateTest;
 constexpr size_t kBlock = 65536;  // faces; block sums joined in order: independent of the thread count
 constexpr size_t kAhead = 64;     // faces (or vertices) whose data is fetched early: it lies all over memory
 
+// A block's volume sums: four faces at a time in double lanes (each face's term in float), the faces
+// of a block's end one at a time. Joined in a fixed order: the same bits whatever the thread count.
 struct FaceSums {
-    double signed_sum = 0, unsigned_sum = 0;
-    void add(double v) { signed_sum += v, unsigned_sum += std::fabs(v); }
+    lanes::Doubles4 signed4{}, unsigned4{};
+    double signed_rest = 0, unsigned_rest = 0;
+    void add(float v) { if (std::isfinite(v)) signed_rest += v, unsigned_rest += std::fabs(v); }
+    void add(lanes::Lanes v) {
+        v = (v - v == 0.0f) ? v : 0.0f;  // not finite: 0
+        signed4 += __builtin_convertvector(v, lanes::Doubles4);
+        unsigned4 += __builtin_convertvector(lanes::magnitude(v), lanes::Doubles4);
+    }
+    EnclosedVolumes total() const {
+        return {((signed4[0] + signed4[1]) + (signed4[2] + signed4[3])) + signed_rest,
+                ((unsigned4[0] + unsigned4[1]) + (unsigned4[2] + unsigned4[3])) + unsigned_rest};
+    }
 };
 
-// Pass 1 (crease_candidates.h): each face's volume term (tetrahedron_volume6) and, where `packs` is
-// given, its packed direction, from one cross product (face_cross).
+// Pass 1 (crease_candidates.h): each face's volume term (tetrahedron_volume6's, in float) and, where
+// `packs` is given, its packed direction, from one cross product (face_cross).
 uint16_t pack_of(const Face& face, glm::vec3 cross, size_t nv) {
     if (!is_valid_face(face, nv)) return Test::kLeftOut;
     // As face_normal: no normal where the float length is 0 or not finite (edge_bends.cpp gives such a
@@ -39,7 +51,7 @@ uint16_t pack_of(const Face& face, glm::vec3 cross, size_t nv) {
     return uint16_t(Test::pack_direction(cross.x, cross.y, cross.z));
 }
 
-void survey_one(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* packs, FaceSums& sums) {
+void survey_one(const Mesh& mesh, size_t f, glm::vec3 apex, uint16_t* packs, FaceSums& sums) {
     const size_t nv = mesh.vertex_count();
     const Face& face = mesh.faces[f];
     if (face[0] >= nv || face[1] >= nv || face[2] >= nv) {  // no volume, no edges
@@ -47,19 +59,18 @@ void survey_one(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* packs
         return;
     }
     const glm::vec3 cross = face_cross(mesh, face);
-    sums.add(tetrahedron_volume6(mesh.positions[face[0]], cross, centroid));
+    sums.add(glm::dot(mesh.positions[face[0]] - apex, cross));
     if (packs) packs[f] = pack_of(face, cross, nv);
 }
 
-// Four faces at once (lanes.h): the same operations as one face's, so the same bits; each face's sums in
-// face order, as one at a time.
-void survey_four(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* packs, FaceSums& sums) {
-    using lanes::Lanes, lanes::Doubles4;
+// Four faces at once (lanes.h): the same operations as one face's, so the same bits.
+void survey_four(const Mesh& mesh, size_t f, glm::vec3 apex, uint16_t* packs, FaceSums& sums) {
+    using lanes::Lanes;
     const Face* faces = &mesh.faces[f];
     const size_t nv = mesh.vertex_count();
     for (int j = 0; j < 4; ++j)
         if (faces[j][0] >= nv || faces[j][1] >= nv || faces[j][2] >= nv) {
-            for (int i = 0; i < 4; ++i) survey_one(mesh, f + i, centroid, packs, sums);
+            for (int i = 0; i < 4; ++i) survey_one(mesh, f + i, apex, packs, sums);
             return;
         }
     auto corner = [&](int k, int axis) {
@@ -69,27 +80,25 @@ void survey_four(const Mesh& mesh, size_t f, glm::dvec3 centroid, uint16_t* pack
     const lanes::Vec3<Lanes> p0{corner(0, 0), corner(0, 1), corner(0, 2)};
     const lanes::Vec3<Lanes> c = lanes::cross(lanes::Vec3<Lanes>{corner(1, 0), corner(1, 1), corner(1, 2)} - p0,
                                               lanes::Vec3<Lanes>{corner(2, 0), corner(2, 1), corner(2, 2)} - p0);
-    auto wide = [](Lanes x) { return __builtin_convertvector(x, Doubles4); };
-    const lanes::Vec3<Doubles4> apex{Doubles4{} + centroid.x, Doubles4{} + centroid.y, Doubles4{} + centroid.z};
-    const Doubles4 volume =
-        lanes::dot(lanes::Vec3<Doubles4>{wide(p0.x), wide(p0.y), wide(p0.z)} - apex,
-                   lanes::Vec3<Doubles4>{wide(c.x), wide(c.y), wide(c.z)});
-    for (int j = 0; j < 4; ++j) sums.add(std::isfinite(volume[j]) ? volume[j] : 0.0);
+    const lanes::Vec3<Lanes> from{Lanes{} + apex.x, Lanes{} + apex.y, Lanes{} + apex.z};
+    sums.add(lanes::dot(p0 - from, c));
     if (!packs) return;
     const Lanes length2 = lanes::dot(c, c);
-    // Faces without a normal (length 0 or not finite) are packed as +x, to keep the pack's lanes finite.
     const lanes::Ints4 normal = (length2 > 0.0f) & (length2 <= std::numeric_limits<float>::max());
-    const Lanes one = Lanes{} + 1.0f, zero = Lanes{};
-    const lanes::Ints4 packed = Test::pack_direction(normal ? c.x : one, normal ? c.y : zero, normal ? c.z : zero);
-    // is_valid_face, lane by lane (every corner is a vertex here): no repeated corner.
-    auto index = [&](int k) {
-        return lanes::Ints4{int32_t(faces[0][k]), int32_t(faces[1][k]), int32_t(faces[2][k]), int32_t(faces[3][k])};
-    };
-    const lanes::Ints4 i0 = index(0), i1 = index(1), i2 = index(2);
-    const lanes::Ints4 valid = (i0 != i1) & (i1 != i2) & (i0 != i2);
-    const lanes::Ints4 out = valid ? (normal ? packed : Test::kNoNormal) : Test::kLeftOut;
+    lanes::Ints4 out = Test::pack_direction(c.x, c.y, c.z);
+    // A face with a repeated corner has a zero cross product: where every face has a normal, none is left out.
+    if (__builtin_expect(!lanes::all(normal), 0)) {
+        auto index = [&](int k) {
+            return lanes::Ints4{int32_t(faces[0][k]), int32_t(faces[1][k]), int32_t(faces[2][k]), int32_t(faces[3][k])};
+        };
+        const lanes::Ints4 i0 = index(0), i1 = index(1), i2 = index(2);
+        const lanes::Ints4 valid = (i0 != i1) & (i1 != i2) & (i0 != i2);  // is_valid_face (every corner is a vertex)
+        out = valid ? (normal ? out : Test::kNoNormal) : Test::kLeftOut;
+    }
+    using Shorts8 = uint16_t __attribute__((vector_size(16)));
     using Shorts4 = uint16_t __attribute__((vector_size(8)));
-    const Shorts4 narrow = __builtin_convertvector(out, Shorts4);
+    const Shorts8 halves = Shorts8(out);  // the low half of each lane (little-endian)
+    const Shorts4 narrow = __builtin_shufflevector(halves, halves, 0, 2, 4, 6);
     std::memcpy(&packs[f], &narrow, sizeof narrow);
 }
 
@@ -143,12 +152,13 @@ public:
         }
         const Face* faces = &mesh_.faces[f];
         const lanes::Ints4 pack{p[0], p[1], p[2], p[3]};
+        lanes::Ints4 r[3];
+        for (int k = 0; k < 3; ++k) r[k] = lanes::Ints4{load(faces[0][k]), load(faces[1][k]), load(faces[2][k]),
+                                                       load(faces[3][k])};
+        // Mostly (on fine meshes) every corner's r is the face's own pack: nothing to test.
+        if (lanes::all((r[0] == pack) & (r[1] == pack) & (r[2] == pack))) return;
         lanes::Ints4 moved{};  // bit k: corner k becomes a candidate
-        for (int k = 0; k < 3; ++k) {
-            auto r = [&](int j) { return load(faces[j][k]); };
-            const lanes::Ints4 rk{r(0), r(1), r(2), r(3)};
-            moved |= (rk != Test::kCandidate) & ~test_.keeps(pack, rk) & (1 << k);
-        }
+        for (int k = 0; k < 3; ++k) moved |= (r[k] != Test::kCandidate) & ~test_.keeps(pack, r[k]) & (1 << k);
         if (__builtin_expect(moved[0] | moved[1] | moved[2] | moved[3], 0))
             for (int j = 0; j < 4; ++j)
                 for (int k = 0; k < 3; ++k)
@@ -193,10 +203,13 @@ template <typename Body> void for_face_blocks(size_t nf, Body&& body) {
 }  // namespace
 
 FaceSurvey survey_faces(const Mesh& mesh, const VertexFaces& vf, float crease_angle_deg) {
+    return survey_faces(mesh, vf, crease_angle_deg, glm::vec3(vertex_centroid(mesh)));
+}
+
+FaceSurvey survey_faces(const Mesh& mesh, const VertexFaces& vf, float crease_angle_deg, glm::vec3 apex) {
     FaceSurvey out;
     const size_t nv = mesh.vertex_count(), nf = mesh.face_count();
     if (nv == 0 || nf == 0) return out;
-    const glm::dvec3 centroid = vertex_centroid(mesh);
     const Test test(crease_angle_deg);
     const bool candidates = crease_angle_deg > 0;
     const bool packing = candidates && !test.everywhere();
@@ -214,10 +227,10 @@ FaceSurvey survey_faces(const Mesh& mesh, const VertexFaces& vf, float crease_an
             for (size_t g = f + kAhead; g < std::min(end, f + kAhead + 4); ++g)
                 for (int k = 0; k < 3; ++k)
                     if (const uint32_t v = mesh.faces[g][k]; v < nv) __builtin_prefetch(&mesh.positions[v]);
-            survey_four(mesh, f, centroid, pack_out, sums);
+            survey_four(mesh, f, apex, pack_out, sums);
         }
-        for (; f < end; ++f) survey_one(mesh, f, centroid, pack_out, sums);
-        partial[b] = {sums.signed_sum, sums.unsigned_sum};
+        for (; f < end; ++f) survey_one(mesh, f, apex, pack_out, sums);
+        partial[b] = sums.total();
     });
     for (const EnclosedVolumes& p : partial)
         out.volumes.signed_sum += p.signed_sum, out.volumes.unsigned_sum += p.unsigned_sum;

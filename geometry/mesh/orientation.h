@@ -34,8 +34,8 @@ glm::dvec3 vertex_centroid(const Mesh& mesh);
 // (p0 - centroid) . ((p1 - p0) x (p2 - p0)), the cross product in float as a
 // face's normal is (face_cross, creases.h), the rest in double; 0 for a face
 // with a missing corner or a volume that is not finite. The pass over the
-// faces (face_survey.h) computes the cross product once for this and the
-// crease candidates.
+// faces (face_survey.h) takes the same term with the dot product in float
+// too, from the cross product it also packs for the crease candidates.
 inline double tetrahedron_volume6(glm::vec3 corner0, glm::vec3 cross, glm::dvec3 centroid) {
     const double v = glm::dot(glm::dvec3(corner0) - centroid, glm::dvec3(cross));
     return std::isfinite(v) ? v : 0.0;

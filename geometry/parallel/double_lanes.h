@@ -107,7 +107,6 @@ template <typename D> KAPPA_LANES_INLINE Vec3<D> normalize(const Vec3<D>& a) { r
 // conversion does).
 using Floats2 = float __attribute__((vector_size(8)));
 using Ints2 = int32_t __attribute__((vector_size(8)));
-using Ints4 = int32_t __attribute__((vector_size(16)));
 template <typename D> struct FloatsOf { using type = float; using mask = bool; };
 template <> struct FloatsOf<Doubles2> { using type = Floats2; using mask = Ints2; };
 template <> struct FloatsOf<Doubles4> { using type = Lanes; using mask = Ints4; };
