@@ -126,3 +126,34 @@ TEST_CASE("kappa render draws a mesh whose faces point inwards as it draws it th
     CHECK(test::count_ink(outward) > 500);
     CHECK(test::largest_difference(outward, inward) <= test::kScreenMergeTolerance);
 }
+
+TEST_CASE("the bounding sphere's radius is the largest distance from the box centre, point by point",
+          "[render][units]") {
+    // render/camera/camera.cpp takes the distances in double, four points at a time in lanes: the same
+    // bits as one at a time (glm::dot), whatever the point the largest is and however many points there are.
+    for (const size_t n : {size_t(1), size_t(5), size_t(65536 + 6), size_t(140001)}) {
+        for (size_t far = 0; far < std::min<size_t>(n, 9); ++far) {
+            Mesh mesh;
+            mesh.positions.resize(n);
+            for (size_t v = 0; v < n; ++v)  // spread on a sphere of radius 1..2 about (3, -1, 2)
+                mesh.positions[v] = glm::vec3(3, -1, 2) + (1.0f + float(v % 7) / 7.0f) *
+                                                              glm::normalize(glm::vec3(std::sin(0.37f * v) + 0.1f,
+                                                                                       std::cos(0.91f * v),
+                                                                                       std::sin(1.3f * v + 1)));
+            const size_t chosen = far * (n / 9);  // the farthest point, in each of the lanes' slots in turn
+            mesh.positions[chosen] = glm::vec3(3, -1, 2) + glm::vec3(far % 3 == 0 ? 5.5f : 0.5f,
+                                                                     far % 3 == 1 ? -5.5f : 0.5f,
+                                                                     far % 3 == 2 ? 5.5f : 0.5f);
+            const PositionBounds box = position_bounds(mesh.positions);
+            double largest = 0;
+            for (const glm::vec3& p : mesh.positions) {
+                const glm::dvec3 d = glm::dvec3(p) - glm::dvec3(box.center());
+                largest = std::max(largest, glm::dot(d, d));
+            }
+            CAPTURE(n, far, chosen);
+            const render::BoundingSphere sphere = render::bounding_sphere(mesh, box);
+            CHECK(sphere.center == box.center());
+            CHECK(sphere.radius == (largest > 0 ? float(std::sqrt(largest)) : 1.0f));  // a point: radius 1
+        }
+    }
+}

@@ -1,6 +1,7 @@
 #include "render/camera/camera.h"
 
 #include "geometry/mesh/position_bounds.h"
+#include "geometry/parallel/double_lanes.h"
 #include "geometry/parallel/parallel.h"
 #include "geometry/view/default_view.h"
 
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -18,24 +20,58 @@ namespace kappa::render {
 
 BoundingSphere bounding_sphere(const Mesh& mesh) { return bounding_sphere(mesh, position_bounds(mesh.positions)); }
 
+namespace {
+
+using lanes::Doubles2;
+
+// The largest squared distance from c of points [first, last), in double (squares of coordinates near
+// 1e20 overflow float) as glm::dot(d, d) takes it, (x^2 + y^2) + z^2, so the same bits one point at a
+// time or two at a time in lanes. A NaN distance is passed over, as std::max passes it over.
+double largest_square(const glm::vec3* p, size_t first, size_t last, glm::dvec3 c) {
+    double largest = 0;
+    size_t v = first;
+    if (last - first >= 4) {
+        // Four points, twelve floats, as six pairs: (x0 y0) (z0 x1) (y1 z1) (x2 y2) (z2 x3) (y3 z3).
+        const Doubles2 cxy{c.x, c.y}, czx{c.z, c.x}, cyz{c.y, c.z};
+        auto low = [](lanes::Lanes x) { return __builtin_convertvector(__builtin_shufflevector(x, x, 0, 1), Doubles2); };
+        auto high = [](lanes::Lanes x) { return __builtin_convertvector(__builtin_shufflevector(x, x, 2, 3), Doubles2); };
+        Doubles2 most{};
+        for (; v + 4 <= last; v += 4) {
+            lanes::Lanes f[3];
+            std::memcpy(f, &p[v], sizeof f);
+            const Doubles2 a = low(f[0]) - cxy, b = high(f[0]) - czx, d = low(f[1]) - cyz;
+            const Doubles2 e = high(f[1]) - cxy, g = low(f[2]) - czx, h = high(f[2]) - cyz;
+            const Doubles2 aa = a * a, bb = b * b, dd = d * d, ee = e * e, gg = g * g, hh = h * h;
+            // Points 0 and 1: x from (aa, bb), y from (aa, dd), z from (bb, dd); points 2 and 3 likewise.
+            const Doubles2 r01 = (__builtin_shufflevector(aa, bb, 0, 3) + __builtin_shufflevector(aa, dd, 1, 2)) +
+                                 __builtin_shufflevector(bb, dd, 0, 3);
+            const Doubles2 r23 = (__builtin_shufflevector(ee, gg, 0, 3) + __builtin_shufflevector(ee, hh, 1, 2)) +
+                                 __builtin_shufflevector(gg, hh, 0, 3);
+            most = most < r01 ? r01 : most;
+            most = most < r23 ? r23 : most;
+        }
+        largest = std::max(most[0], most[1]);
+    }
+    for (; v < last; ++v) {
+        const glm::dvec3 d = glm::dvec3(p[v]) - c;
+        largest = std::max(largest, glm::dot(d, d));
+    }
+    return largest;
+}
+
+}  // namespace
+
 BoundingSphere bounding_sphere(const Mesh& mesh, const PositionBounds& box) {
-    if (mesh.positions.empty()) return {};
+    if (mesh.positions.empty() || box.empty()) return {};
     // The radius in blocks, in parallel: the largest is the same in any order.
     constexpr size_t kBlock = 65536;
     const size_t n = mesh.positions.size(), blocks = (n + kBlock - 1) / kBlock;
-    auto each_block = [&](auto&& body) {
-        parallel_for_chunked(blocks, [&](size_t b) { body(b, b * kBlock, std::min(n, (b + 1) * kBlock)); }, 1);
-    };
-    if (box.empty()) return {};
     BoundingSphere s;
     s.center = box.center();
-    std::vector<double> r2(blocks, 0.0);  // in double: squares of coordinates near 1e20 overflow float
-    each_block([&](size_t b, size_t first, size_t last) {
-        for (size_t v = first; v < last; ++v) {
-            const glm::dvec3 d = glm::dvec3(mesh.positions[v]) - glm::dvec3(s.center);
-            r2[b] = std::max(r2[b], glm::dot(d, d));
-        }
-    });
+    std::vector<double> r2(blocks, 0.0);
+    parallel_for_chunked(blocks, [&](size_t b) {
+        r2[b] = largest_square(mesh.positions.data(), b * kBlock, std::min(n, (b + 1) * kBlock), glm::dvec3(s.center));
+    }, 1);
     const double largest = *std::max_element(r2.begin(), r2.end());
     s.radius = largest > 0 ? float(std::sqrt(largest)) : 1.0f;
     return s;
