@@ -119,8 +119,11 @@ TEST_CASE("Creases: the sampled auto vote agrees with the whole count, and leave
         const CreaseVote whole = full_vote(*c.mesh);
         CHECK(whole == c.expected);
         const VertexFaces vf = build_vertex_faces(*c.mesh);
-        const CreaseVote sampled = sampled_crease_vote(*c.mesh, vf);
+        size_t looked_at = 0;
+        const CreaseVote sampled = sampled_crease_vote(*c.mesh, vf, &looked_at);
         CHECK(sampled == (c.sampled ? whole : CreaseVote::Unclear));
+        // Far from half, the first stage's vertices decide; near it, the whole sample is looked at.
+        CHECK(looked_at == (c.sampled ? kVoteSamples / kFirstStage : kVoteSamples));
         const float angle = whole == CreaseVote::On ? kAutoCreaseAngle : 0.0f;
         CHECK(auto_crease_angle(*c.mesh) == angle);
         CHECK(resolve_creases(*c.mesh, vf, -1).angle == angle);
@@ -129,7 +132,9 @@ TEST_CASE("Creases: the sampled auto vote agrees with the whole count, and leave
     const Mesh bunny = load_mesh(test::shared_mesh("bunny-1M.ply"));
     const VertexFaces vf = build_vertex_faces(bunny);
     CHECK(full_vote(bunny) == CreaseVote::Off);
-    CHECK(sampled_crease_vote(bunny, vf) == CreaseVote::Off);
+    size_t looked_at = 0;
+    CHECK(sampled_crease_vote(bunny, vf, &looked_at) == CreaseVote::Off);
+    CHECK(looked_at == kVoteSamples / kFirstStage);
     // Small meshes are always counted whole.
     const Mesh small = make_icosphere(1, 4);
     CHECK(sampled_crease_vote(small, build_vertex_faces(small)) == CreaseVote::Unclear);
