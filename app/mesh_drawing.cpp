@@ -76,11 +76,11 @@ void MeshDrawing::prepare_mesh() {
     crease_angle_ = prepared.creases.angle;
     // Sharp edges split the mesh: each side gets its own normals and curvature.
     drawn_ = split_at_creases(std::move(input), prepared.creases.creases, &adjacency_);
+    bounds_ = render::bounding_sphere(drawn_.mesh, prepared.box);  // on every thread, before the clusters take one
     // The first view's triangle order depends on the faces alone: made beside the fields (one
     // thread of work, 2 s for 17.8M faces). A page without threads makes it when it is needed.
     clusters_ = std::async(thread_count() > 1 ? std::launch::async : std::launch::deferred,
                            [this] { return render::MeshBuffers::face_clusters_of(drawn_.mesh, &adjacency_); });
-    bounds_ = render::bounding_sphere(drawn_.mesh, prepared.box);
 }
 
 render::MeshFacts MeshDrawing::take_mesh_facts() {
