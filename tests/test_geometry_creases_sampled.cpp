@@ -281,47 +281,73 @@ TEST_CASE("Crease candidates: a face the test keeps lies within the half angle o
     CHECK(!CreaseCandidateTest(6.0f).everywhere());
 }
 
+namespace {
+
+// crease_candidates.h's rule, vertex by vertex: r is the pack of the first face in the vertex's row that
+// is not left out, and the vertex is a candidate if a face in its row has no normal or a pack the test
+// does not keep with r.
+std::vector<uint32_t> candidates_by_the_rule(const Mesh& mesh, const VertexFaces& vf, float angle) {
+    const CreaseCandidateTest test(angle);
+    const size_t nv = mesh.vertex_count();
+    std::vector<uint32_t> expected;
+    for (uint32_t v = 0; v < nv; ++v) {
+        int32_t r = -1;
+        bool candidate = false;
+        for (uint32_t i = vf.begin(v); i < vf.end(v); ++i) {
+            const Face& f = mesh.faces[vf.corners[i] / 3];
+            if (!is_valid_face(f, nv)) continue;
+            const glm::vec3 c = face_cross(mesh, f);
+            if (!(glm::dot(c, c) > 0)) {
+                candidate = true;
+                break;
+            }
+            const int32_t p = CreaseCandidateTest::pack_direction(c.x, c.y, c.z);
+            if (r < 0) r = p;
+            if (!test.keeps(p, r)) candidate = true;
+        }
+        if (candidate) expected.push_back(v);
+    }
+    return expected;
+}
+
+// Faces that test the passes' odd cases: a repeated corner (no edges), a degenerate face (no normal)
+// first in its corners' rows (before every other face) and last.
+void add_odd_faces(Mesh& mesh) {
+    mesh.faces.insert(mesh.faces.begin(), Face{7, 8, 9});
+    mesh.positions[9] = mesh.positions[8];
+    mesh.faces.push_back({0, 0, 1});
+    mesh.faces.push_back({2, 3, 4});
+    mesh.positions[4] = mesh.positions[3];
+}
+
+}  // namespace
+
 TEST_CASE("The pass over the faces: its candidates are those of the rule taken vertex by vertex", "[creases]") {
-    // survey_faces takes four faces at a time in three passes; crease_candidates.h's rule, vertex by
-    // vertex: r is the pack of the first face in the vertex's row that is not left out, and the vertex is
-    // a candidate if a face in its row has no normal or a pack the test does not keep with r.
+    // survey_faces takes four faces at a time in three passes, and collects the candidates from what the
+    // passes noted where they are few (the sphere), else from the vertices' marks (jittered fandisk).
     Mesh fandisk = load_mesh(test::shared_mesh("fandisk.obj"));
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> jitter(-0.004f, 0.004f);
     for (glm::vec3& p : fandisk.positions) p += glm::vec3(jitter(rng), jitter(rng), jitter(rng));
-    fandisk.faces.push_back({0, 0, 1});                          // a repeated corner: no edges
-    fandisk.faces.push_back({2, 3, 4});                          // a degenerate face below:
-    fandisk.positions[4] = fandisk.positions[3];
-    fandisk.faces.push_back({5, 6, uint32_t(fandisk.vertex_count())});  // a missing corner: left out
-    const size_t nv = fandisk.vertex_count();
-    const VertexFaces vf = build_vertex_faces(fandisk);
-    for (const float angle : {kAutoCreaseAngle, 12.0f, 20.0f}) {
-        INFO("angle " << angle);
-        const CreaseCandidateTest test(angle);
-        std::vector<uint32_t> expected;
-        for (uint32_t v = 0; v < nv; ++v) {
-            int32_t r = -1;
-            bool candidate = false;
-            for (uint32_t i = vf.begin(v); i < vf.end(v); ++i) {
-                const Face& f = fandisk.faces[vf.corners[i] / 3];
-                if (!is_valid_face(f, nv)) continue;
-                const glm::vec3 c = face_cross(fandisk, f);
-                if (!(glm::dot(c, c) > 0)) {
-                    candidate = true;
-                    break;
-                }
-                const int32_t p = CreaseCandidateTest::pack_direction(c.x, c.y, c.z);
-                if (r < 0) r = p;
-                if (!test.keeps(p, r)) candidate = true;
-            }
-            if (candidate) expected.push_back(v);
+    Mesh sphere = make_icosphere(1.0f, 6);  // 41k vertices, faces about a degree apart
+    for (Mesh* mesh : {&fandisk, &sphere}) {
+        add_odd_faces(*mesh);
+        const size_t nv = mesh->vertex_count();
+        const VertexFaces vf = build_vertex_faces(*mesh);
+        // A face with a missing corner (left out), after the rows: they are made of valid corners only.
+        mesh->faces.push_back({5, 6, uint32_t(nv)});
+        for (const float angle : {kAutoCreaseAngle, 12.0f, 20.0f}) {
+            INFO((mesh == &sphere ? "sphere" : "fandisk") << ", angle " << angle);
+            const std::vector<uint32_t> expected = candidates_by_the_rule(*mesh, vf, angle);
+            const FaceSurvey survey = survey_faces(*mesh, vf, angle);
+            CHECK(survey.crease_candidates == expected);
+            for (const uint32_t v : {3u, 8u})  // the degenerate faces' corners
+                CHECK(std::binary_search(expected.begin(), expected.end(), v));
+            if (angle == kAutoCreaseAngle) CHECK(expected.size() < nv / 3);  // a shortcut, even on this noise
+            if (mesh == &sphere && angle != 12.0f) CHECK(expected.size() < nv / 64);  // few: the noted path
         }
-        const FaceSurvey survey = survey_faces(fandisk, vf, angle);
-        CHECK(survey.crease_candidates == expected);
-        CHECK(std::binary_search(expected.begin(), expected.end(), 3u));  // the degenerate face's corner
-        if (angle == kAutoCreaseAngle) CHECK(expected.size() < nv / 3);  // a shortcut, even on this noise
+        CHECK(survey_faces(*mesh, vf, 5.0f).crease_candidates.size() == nv);  // no room: every vertex
     }
-    CHECK(survey_faces(fandisk, vf, 5.0f).crease_candidates.size() == nv);  // no room: every vertex
 }
 
 TEST_CASE("The pass over the faces: volumes as the inside-out test sums them, whatever the thread count",

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <numeric>
 
 namespace kappa {
@@ -104,12 +105,15 @@ void survey_four(const Mesh& mesh, size_t f, glm::vec3 apex, uint16_t* packs, Fa
 
 // Pass 2: each vertex's r, the pack of the first face in its row that is not left out (kLeftOut where
 // none is); a face without a normal there makes the vertex a candidate at once.
-UninitializedArray<uint16_t> references(const VertexFaces& vf, const uint16_t* packs, size_t nv) {
+UninitializedArray<uint16_t> references(const VertexFaces& vf, const uint16_t* packs, size_t nv,
+                                        std::vector<uint32_t>& candidates) {
     UninitializedArray<uint16_t> out(nv);
+    std::mutex joining;
     io::prefault(out.data(), nv * sizeof(uint16_t));
     const uint32_t* offsets = vf.offsets.data();
     const uint32_t* corners = vf.corners.data();
     parallel_for_chunks(nv, [&](size_t first, size_t last) {
+        std::vector<uint32_t> found;
         for (size_t v = first; v < last; ++v) {
             if (v + kAhead < nv && offsets[v + kAhead] < offsets[v + kAhead + 1])
                 __builtin_prefetch(&packs[corners[offsets[v + kAhead]] / 3]);
@@ -120,34 +124,38 @@ UninitializedArray<uint16_t> references(const VertexFaces& vf, const uint16_t* p
                     break;
                 }
             out[v] = r;
+            if (r == Test::kCandidate) found.push_back(uint32_t(v));
         }
+        if (found.empty()) return;
+        const std::lock_guard<std::mutex> lock(joining);
+        candidates.insert(candidates.end(), found.begin(), found.end());
     });
     return out;
 }
 
 // Pass 3: each face against its corners' r. Only kCandidate is ever stored, so the outcome does not
-// depend on the order in which threads meet the faces.
+// depend on the order in which threads meet the faces. The vertices a block marks are also noted in
+// `marks` (some twice, where two threads mark one at once).
 class FaceTest {
 public:
     FaceTest(const Mesh& mesh, const uint16_t* packs, uint16_t* references, const Test& test)
         : mesh_(mesh), packs_(packs), references_(references), test_(test) {}
 
-    void one(size_t f) const {
+    void one(size_t f, std::vector<uint32_t>& marks) const {
         const uint16_t pack = packs_[f];
         if (pack == Test::kLeftOut) return;
         const Face& face = mesh_.faces[f];
         for (int k = 0; k < 3; ++k) {
             const uint16_t r = load(face[k]);
             if (r == Test::kCandidate) continue;
-            if (pack == Test::kNoNormal || !test_.keeps(int32_t(pack), int32_t(r)))
-                mark(face[k]);
+            if (pack == Test::kNoNormal || !test_.keeps(int32_t(pack), int32_t(r))) mark(face[k], marks);
         }
     }
 
-    void four(size_t f) const {
+    void four(size_t f, std::vector<uint32_t>& marks) const {
         const uint16_t* p = &packs_[f];
         if (!(p[0] & p[1] & p[2] & p[3] & 0x8000)) {  // some face left out or without a normal
-            for (int j = 0; j < 4; ++j) one(f + j);
+            for (int j = 0; j < 4; ++j) one(f + j, marks);
             return;
         }
         const Face* faces = &mesh_.faces[f];
@@ -162,7 +170,7 @@ public:
         if (__builtin_expect(moved[0] | moved[1] | moved[2] | moved[3], 0))
             for (int j = 0; j < 4; ++j)
                 for (int k = 0; k < 3; ++k)
-                    if (moved[j] & (1 << k)) mark(faces[j][k]);
+                    if (moved[j] & (1 << k)) mark(faces[j][k], marks);
     }
 
     void prefetch(size_t f) const {
@@ -173,7 +181,10 @@ public:
 private:
     // Relaxed atomic loads and stores (the references are written by other threads meanwhile).
     uint16_t load(uint32_t v) const { return __atomic_load_n(&references_[v], __ATOMIC_RELAXED); }
-    void mark(uint32_t v) const { __atomic_store_n(&references_[v], Test::kCandidate, __ATOMIC_RELAXED); }
+    void mark(uint32_t v, std::vector<uint32_t>& marks) const {
+        __atomic_store_n(&references_[v], Test::kCandidate, __ATOMIC_RELAXED);
+        marks.push_back(v);
+    }
 
     const Mesh& mesh_;
     const uint16_t* packs_;
@@ -181,8 +192,14 @@ private:
     const Test& test_;
 };
 
-// The vertices marked kCandidate, in increasing order.
-std::vector<uint32_t> marked(const UninitializedArray<uint16_t>& references) {
+// The vertices marked kCandidate, in increasing order: from the passes' notes where they are few, else
+// from a pass over the references.
+std::vector<uint32_t> marked(const UninitializedArray<uint16_t>& references, std::vector<uint32_t> noted) {
+    if (noted.size() <= references.size() / 64) {
+        std::sort(noted.begin(), noted.end());
+        noted.erase(std::unique(noted.begin(), noted.end()), noted.end());
+        return noted;
+    }
     const size_t nv = references.size(), blocks = (nv + kBlock - 1) / kBlock;
     std::vector<std::vector<uint32_t>> found(blocks);
     parallel_for_chunked(blocks, [&](size_t b) {
@@ -241,17 +258,20 @@ FaceSurvey survey_faces(const Mesh& mesh, const VertexFaces& vf, float crease_an
         return out;
     }
 
-    UninitializedArray<uint16_t> refs = references(vf, packs.data(), nv);
+    std::vector<uint32_t> noted;
+    UninitializedArray<uint16_t> refs = references(vf, packs.data(), nv, noted);
     const FaceTest faces(mesh, packs.data(), refs.data(), test);
-    for_face_blocks(nf, [&](size_t, size_t begin, size_t end) {
+    std::vector<std::vector<uint32_t>> marks((nf + kBlock - 1) / kBlock);
+    for_face_blocks(nf, [&](size_t b, size_t begin, size_t end) {
         size_t f = begin;
         for (; f + 4 <= end; f += 4) {
             for (size_t g = f + kAhead; g < std::min(end, f + kAhead + 4); ++g) faces.prefetch(g);
-            faces.four(f);
+            faces.four(f, marks[b]);
         }
-        for (; f < end; ++f) faces.one(f);
+        for (; f < end; ++f) faces.one(f, marks[b]);
     });
-    out.crease_candidates = marked(refs);
+    for (const std::vector<uint32_t>& m : marks) noted.insert(noted.end(), m.begin(), m.end());
+    out.crease_candidates = marked(refs, std::move(noted));
     return out;
 }
 

@@ -20,7 +20,9 @@ struct VertexFaces {
 };
 
 // Counting sort over the face corners: O(V + F). The row starts have room
-// for row_starts_room(V) entries.
+// for row_starts_room(V) entries. Every corner must be a vertex (the readers
+// and the Python module check it; the full test suite runs clean with a trap
+// on any other).
 VertexFaces build_vertex_faces(const Mesh& mesh);
 
 // The row starts' room for V vertices: V + 1 and the rows of the vertex copies
