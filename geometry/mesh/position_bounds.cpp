@@ -26,14 +26,14 @@ void add_points(PositionBounds& out, const glm::vec3* p, size_t first, size_t la
 // the k-th lanes holds coordinate (4 k + j) % 3. False, with `out` unchanged, where some coordinate is not
 // finite (x - x is then NaN, and NaN stays in a sum).
 bool add_groups(PositionBounds& out, const glm::vec3* p, size_t first, size_t groups) {
-    const float* f = &p[first].x;
+    const char* bytes = reinterpret_cast<const char*>(p + first);
     Lanes lo[3], hi[3], nonfinite{};
     for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 4; ++j) lo[k][j] = out.lo[(4 * k + j) % 3], hi[k][j] = out.hi[(4 * k + j) % 3];
-    for (size_t g = 0; g < groups; ++g, f += 12)
+    for (size_t g = 0; g < groups; ++g, bytes += 4 * sizeof(glm::vec3))
         for (int k = 0; k < 3; ++k) {
             Lanes x;
-            std::memcpy(&x, f + 4 * k, sizeof x);
+            std::memcpy(&x, bytes + k * sizeof x, sizeof x);
             nonfinite += x - x;
             lo[k] = x < lo[k] ? x : lo[k], hi[k] = hi[k] < x ? x : hi[k];
         }
