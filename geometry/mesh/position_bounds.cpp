@@ -37,7 +37,7 @@ bool add_groups(PositionBounds& out, const glm::vec3* p, size_t first, size_t gr
             nonfinite += x - x;
             lo[k] = x < lo[k] ? x : lo[k], hi[k] = hi[k] < x ? x : hi[k];
         }
-    if (!(nonfinite[0] == 0 && nonfinite[1] == 0 && nonfinite[2] == 0 && nonfinite[3] == 0)) return false;
+    if (!lanes::all(nonfinite == 0.0f)) return false;
     for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 4; ++j) {
             const int axis = (4 * k + j) % 3;
